@@ -1,0 +1,17 @@
+#pragma once
+// One accessor per model rule; rules/registry.cpp lists them in order.
+#include "engine/rule.h"
+
+namespace assetlint::rules {
+
+const Rule& structure_undefined_link();
+const Rule& structure_mimic_reference();
+const Rule& limits_inverted();
+const Rule& units_angle_degrees();
+const Rule& units_velocity_implausible();
+const Rule& mimic_max_velocity();
+const Rule& mimic_limit_conflict();
+const Rule& inertia_invalid();
+const Rule& drive_max_force();
+
+}  // namespace assetlint::rules

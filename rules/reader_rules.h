@@ -1,0 +1,11 @@
+#pragma once
+// Rules whose findings come from the readers (syntax, schema and composition
+// problems) rather than from a check over the model.
+#include "engine/rule.h"
+
+namespace assetlint::rules {
+
+extern const RuleInfo kParseError;
+extern const RuleInfo kUrdfInvalid;
+
+}  // namespace assetlint::rules

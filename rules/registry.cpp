@@ -1,0 +1,41 @@
+#include "rules/registry.h"
+
+#include <algorithm>
+
+#include "rules/all_rules.h"
+#include "rules/reader_rules.h"
+
+namespace assetlint::rules {
+
+const std::vector<const Rule*>& checks() {
+  static const std::vector<const Rule*> list{
+      &structure_undefined_link(),
+      &structure_mimic_reference(),
+      &limits_inverted(),
+      &units_angle_degrees(),
+      &units_velocity_implausible(),
+      &mimic_max_velocity(),
+      &mimic_limit_conflict(),
+      &inertia_invalid(),
+      &drive_max_force(),
+  };
+  return list;
+}
+
+const std::vector<const RuleInfo*>& catalog() {
+  static const std::vector<const RuleInfo*> list = [] {
+    std::vector<const RuleInfo*> all{&kParseError, &kUrdfInvalid};
+    for (const Rule* rule : checks()) all.push_back(&rule->info());
+    std::sort(all.begin(), all.end(), [](const RuleInfo* a, const RuleInfo* b) { return a->id < b->id; });
+    return all;
+  }();
+  return list;
+}
+
+const RuleInfo* find_rule(std::string_view id) {
+  for (const RuleInfo* info : catalog())
+    if (info->id == id) return info;
+  return nullptr;
+}
+
+}  // namespace assetlint::rules

@@ -1,0 +1,27 @@
+#include "rules/support.h"
+
+#include <fmt/format.h>
+
+#include "util/numbers.h"
+
+namespace assetlint::rules {
+
+std::string describe(double model_value, Unit file_unit, int significant) {
+  const auto with_symbol = [](const std::string& number, Unit unit) {
+    const auto symbol = unit_symbol(unit);
+    return symbol.empty() ? number : number + " " + std::string(symbol);
+  };
+  const std::string in_file = with_symbol(format_number(from_model_units(model_value, file_unit), significant), file_unit);
+  if (!converts(file_unit) || file_unit == Unit::UsdGearing) return in_file;
+  return fmt::format("{} ({})", in_file, with_symbol(format_number(model_value, significant), model_unit(file_unit)));
+}
+
+Edit replace_value(const Quantity& q, double model_value, int significant) {
+  return Edit{q.span.file, q.span.offset, q.span.length, format_number(q.authored_for(model_value), significant)};
+}
+
+std::string joint_label(const Joint& joint) {
+  return fmt::format("{} joint '{}'", joint_type_name(joint.type), joint.name.text);
+}
+
+}  // namespace assetlint::rules

@@ -1,0 +1,21 @@
+#pragma once
+// Small helpers shared by rules: wording of quantities and building value edits.
+#include <string>
+
+#include "engine/diagnostic.h"
+#include "model/asset.h"
+
+namespace assetlint::rules {
+
+// A model value as the file writes it and, when the file's unit differs, as PhysX
+// sees it: "146.5 deg/s (2.556 rad/s)" or "5700 N·m/rad".
+std::string describe(double model_value, Unit file_unit, int significant = 4);
+inline std::string describe(const Quantity& q, int significant = 4) { return describe(q.value, q.unit, significant); }
+
+// An edit that rewrites a quantity's literal with a new model value, in the file's unit.
+Edit replace_value(const Quantity& q, double model_value, int significant = 6);
+
+// "revolute joint 'J0'"
+std::string joint_label(const Joint& joint);
+
+}  // namespace assetlint::rules

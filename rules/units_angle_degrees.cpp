@@ -1,0 +1,70 @@
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "rules/all_rules.h"
+#include "rules/support.h"
+#include "util/numbers.h"
+
+namespace assetlint::rules {
+namespace {
+
+class UnitsAngleDegrees final : public Rule {
+ public:
+  const RuleInfo& info() const override { return info_; }
+
+  void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    const double min_magnitude = rule_option(info_, settings, "min_magnitude_rad");
+    const double pi_tolerance = rule_option(info_, settings, "pi_multiple_tolerance");
+    for (const Joint& joint : asset.joints) {
+      if (joint.type != JointType::Revolute || !joint.lower || !joint.upper) continue;
+      const Quantity& lower = *joint.lower;
+      const Quantity& upper = *joint.upper;
+      if (lower.unit != Unit::Radian || upper.unit != Unit::Radian) continue;
+      const double largest = std::max(std::fabs(lower.value), std::fabs(upper.value));
+      if (largest <= min_magnitude || largest > 360.0) continue;
+      // Multiples of π (±31.4, ±3π) are deliberate radian values: multi-turn ranges or
+      // "no limit" placeholders, not degrees.
+      if (near_pi_multiple(lower.value, pi_tolerance) && near_pi_multiple(upper.value, pi_tolerance)) continue;
+      const double lower_rad = radians_from_degrees(lower.authored);
+      const double upper_rad = radians_from_degrees(upper.authored);
+      Diagnostic& d = out.report(
+          largest == std::fabs(upper.value) ? upper.span : lower.span,
+          fmt::format("limits [{}, {}] of {} look like degrees: {} rad is {} turns (threshold {} rad); read as "
+                      "degrees they are [{}, {}] rad",
+                      format_number(lower.authored), format_number(upper.authored), joint_label(joint),
+                      format_number(largest, 4), format_number(largest / (2 * std::numbers::pi), 3),
+                      format_number(min_magnitude, 4), format_number(lower_rad), format_number(upper_rad)));
+      std::vector<Edit> edits;
+      if (lower.span.valid()) edits.push_back(replace_value(lower, lower_rad));
+      if (upper.span.valid()) edits.push_back(replace_value(upper, upper_rad));
+      d.fix = Fix{"convert the limits from degrees to radians", Applicability::Unsafe, std::move(edits)};
+    }
+  }
+
+ private:
+  static bool near_pi_multiple(double value, double tolerance) {
+    const double turns = value / std::numbers::pi;
+    return std::fabs(turns - std::round(turns)) <= tolerance;
+  }
+
+  RuleInfo info_{"units-angle-degrees",
+                 "Revolute limits written in degrees where URDF expects radians",
+                 Severity::Error,
+                 true,
+                 RuleOrigin::Check,
+                 {{"min_magnitude_rad", 4 * std::numbers::pi,
+                   "a limit must exceed this magnitude (radians; default 4π, two turns) to be read as degrees"},
+                  {"pi_multiple_tolerance", 0.01,
+                   "limits within this fraction of a multiple of π are taken as deliberate radians"}}};
+};
+
+}  // namespace
+
+const Rule& units_angle_degrees() {
+  static const UnitsAngleDegrees rule;
+  return rule;
+}
+
+}  // namespace assetlint::rules

@@ -1,0 +1,155 @@
+#include "cli/app.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <thread>
+
+#include "cli/rule_docs.h"
+#include "engine/linter.h"
+#include "report/json_reporter.h"
+#include "report/summary.h"
+#include "report/text_reporter.h"
+#include "rules/registry.h"
+#include "util/numbers.h"
+
+namespace assetlint::cli {
+namespace {
+
+constexpr int kExitClean = 0;
+constexpr int kExitFindings = 1;
+constexpr int kExitError = 2;
+
+void list_rules(std::ostream& out) {
+  std::size_t width = 0;
+  for (const RuleInfo* rule : rules::catalog()) width = std::max(width, rule->id.size());
+  for (const RuleInfo* rule : rules::catalog()) {
+    out << fmt::format("{:<{}}  {:<7}  {:<7}  {}\n", rule->id, width, severity_name(rule->default_severity),
+                       rule->fixable ? "fixable" : "", rule->summary);
+  }
+}
+
+int show_rule(const std::string& id, std::ostream& out, std::ostream& err) {
+  const RuleInfo* rule = rules::find_rule(id);
+  if (!rule) {
+    err << fmt::format("asset-lint: error: unknown rule '{}'; `asset-lint --list-rules` lists them\n", id);
+    return kExitError;
+  }
+  for (const auto& [doc_id, page] : rule_docs()) {
+    if (doc_id == id) {
+      out << page;
+      if (!page.empty() && page.back() != '\n') out << "\n";
+      break;
+    }
+  }
+  out << fmt::format("\nDefault severity: {}. Fix: {}.\n", severity_name(rule->default_severity),
+                     rule->fixable ? "available" : "none");
+  if (!rule->options.empty()) {
+    out << "Options ([rules." << rule->id << "] in asset-lint.toml):\n";
+    for (const auto& option : rule->options)
+      out << fmt::format("  {} = {}  {}\n", option.name, format_number(option.default_value, 6), option.description);
+  }
+  return kExitClean;
+}
+
+// Each --select/--ignore pattern must name at least one rule: a typo would
+// otherwise silently select nothing.
+bool validate_patterns(const std::vector<std::string>& patterns, const char* flag, std::ostream& err) {
+  for (const auto& pattern : patterns) {
+    bool matched = false;
+    for (const RuleInfo* rule : rules::catalog()) matched = matched || glob_match(pattern, rule->id);
+    if (!matched) {
+      err << fmt::format("asset-lint: error: {} '{}' matches no rule; `asset-lint --list-rules` lists them\n", flag,
+                         pattern);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
+  std::vector<std::string> args = raw_args;
+  if (!args.empty() && args.front() == "rule") {
+    if (args.size() != 2) {
+      err << "asset-lint: error: usage: asset-lint rule RULE-ID\n";
+      return kExitError;
+    }
+    return show_rule(args[1], out, err);
+  }
+  if (!args.empty() && args.front() == "check") args.erase(args.begin());
+
+  CLI::App app{"asset-lint: checks robot assets (URDF, USDA) against PhysX joint-tuning guidance", "asset-lint"};
+  std::vector<std::string> paths;
+  std::vector<std::string> select, ignore;
+  std::string format = "text";
+  std::string color = "auto";
+  bool show_rules = false, show_version = false;
+  unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+  app.add_option("paths", paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
+  app.add_option("--select", select, "Only these rules (comma list, globs such as 'mimic-*')")->delimiter(',');
+  app.add_option("--ignore", ignore, "Skip these rules (comma list, globs)")->delimiter(',');
+  app.add_option("--output-format", format, "Output format")->check(CLI::IsMember({"text", "json"}));
+  app.add_option("--color", color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_option("-j,--jobs", jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
+  app.add_flag("--list-rules", show_rules, "List every rule and exit");
+  app.add_flag("--version", show_version, "Print the version and exit");
+  app.footer(
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
+      "Exit status: 0 nothing reported, 1 findings remain, 2 usage, configuration or I/O error.");
+
+  std::vector<std::string> reversed(args.rbegin(), args.rend());
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return kExitClean;
+  } catch (const CLI::ParseError& e) {
+    err << "asset-lint: error: " << e.what() << "\n";
+    return kExitError;
+  }
+  if (show_version) {
+    out << "asset-lint " << ASSET_LINT_VERSION << "\n";
+    return kExitClean;
+  }
+  if (show_rules) {
+    list_rules(out);
+    return kExitClean;
+  }
+  if (paths.empty()) {
+    err << "asset-lint: error: no files to check; usage: asset-lint [check] PATH...\n";
+    return kExitError;
+  }
+  if (!validate_patterns(select, "--select", err) || !validate_patterns(ignore, "--ignore", err)) return kExitError;
+
+  Settings settings;
+  settings.selection.select = select;
+  settings.selection.ignore = ignore;
+
+  PathExpansion expansion = expand_paths(paths);
+  bool io_error = false;
+  for (const auto& message : expansion.errors) {
+    err << "asset-lint: error: " << message << "\n";
+    io_error = true;
+  }
+  std::vector<FileReport> reports = lint_files(expansion.files, settings, jobs);
+  std::erase_if(reports, [&](const FileReport& report) {
+    if (!report.error) return false;
+    err << "asset-lint: error: " << *report.error << "\n";
+    io_error = true;
+    return true;
+  });
+
+  if (format == "json") {
+    write_json(out, reports);
+  } else {
+    const bool use_color = color == "always" || (color == "auto" && out_is_terminal && !std::getenv("NO_COLOR"));
+    write_text(out, reports, TextOptions{use_color, true});
+  }
+  if (io_error) return kExitError;
+  return summarize(reports).total() == 0 ? kExitClean : kExitFindings;
+}
+
+}  // namespace assetlint::cli

@@ -1,0 +1,145 @@
+#include "engine/linter.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "engine/rule.h"
+#include "formats/urdf/urdf_reader.h"
+#include "rules/registry.h"
+
+namespace assetlint {
+namespace {
+
+std::string extension_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file) {
+  switch (file_kind(path)) {
+    case FileKind::Urdf: return urdf::read_urdf(std::move(file));
+    default: break;
+  }
+  ReadResult unsupported;
+  unsupported.asset.sources.push_back(std::move(file));
+  unsupported.usable = false;
+  return unsupported;
+}
+
+void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
+  std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::tie(a.span.file, a.span.offset, a.rule) < std::tie(b.span.file, b.span.offset, b.rule);
+  });
+}
+
+}  // namespace
+
+FileKind file_kind(const std::string& path) {
+  const std::string ext = extension_of(path);
+  if (ext == ".urdf") return FileKind::Urdf;
+  return FileKind::Unsupported;
+}
+
+FileReport lint_text(const std::string& path, std::string text, const Settings& settings) {
+  FileReport report;
+  report.path = path;
+  if (file_kind(path) == FileKind::Unsupported) {
+    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf files)", extension_of(path));
+    return report;
+  }
+  auto file = std::make_shared<const SourceFile>(path, std::move(text));
+  ReadResult result = read(path, std::move(file));
+  std::vector<Diagnostic> diagnostics;
+  for (auto& d : result.diagnostics)
+    if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
+  if (result.usable) {
+    for (const Rule* rule : rules::checks()) {
+      if (!settings.selection.enabled(rule->info().id)) continue;
+      Reporter reporter(rule->info(), diagnostics);
+      rule->check(result.asset, settings, reporter);
+    }
+  }
+  for (auto& d : diagnostics) {
+    if (const RuleInfo* info = rules::find_rule(d.rule); info && d.severity == info->default_severity)
+      d.severity = settings.severity_for(d.rule, d.severity);
+  }
+  sort_diagnostics(diagnostics);
+  report.diagnostics = std::move(diagnostics);
+  report.sources = std::move(result.asset.sources);
+  return report;
+}
+
+FileReport lint_file(const std::string& path, const Settings& settings) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    FileReport report;
+    report.path = path;
+    report.error = fmt::format("cannot read '{}': {}", path, std::strerror(errno));
+    return report;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) {
+    FileReport report;
+    report.path = path;
+    report.error = fmt::format("cannot read '{}': read failed", path);
+    return report;
+  }
+  return lint_text(path, std::move(buffer).str(), settings);
+}
+
+std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs) {
+  std::vector<FileReport> reports(paths.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < paths.size(); i = next++) reports[i] = lint_file(paths[i], settings);
+  };
+  jobs = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(paths.size())));
+  std::vector<std::thread> threads;
+  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  return reports;
+}
+
+PathExpansion expand_paths(const std::vector<std::string>& paths) {
+  namespace fs = std::filesystem;
+  PathExpansion out;
+  for (const auto& path : paths) {
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) {
+      out.errors.push_back(fmt::format("no such file or directory: '{}'", path));
+      continue;
+    }
+    if (!fs::is_directory(status)) {
+      out.files.push_back(path);
+      continue;
+    }
+    std::vector<std::string> found;
+    fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+      const auto name = it->path().filename().string();
+      if (it->is_directory(ec)) {
+        if (name.starts_with(".")) it.disable_recursion_pending();
+        continue;
+      }
+      if (it->is_regular_file(ec) && file_kind(it->path().string()) != FileKind::Unsupported)
+        found.push_back(it->path().string());
+    }
+    std::sort(found.begin(), found.end());
+    out.files.insert(out.files.end(), found.begin(), found.end());
+  }
+  return out;
+}
+
+}  // namespace assetlint

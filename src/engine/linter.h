@@ -1,0 +1,42 @@
+#pragma once
+// Runs the readers and the rules over files: the one entry point the CLI, the fixer
+// and the tests share.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/diagnostic.h"
+#include "engine/settings.h"
+#include "model/source.h"
+
+namespace assetlint {
+
+struct FileReport {
+  std::string path;                                       // as the user named it
+  std::vector<std::shared_ptr<const SourceFile>> sources; // [0] is the file itself; more for composed layers
+  std::vector<Diagnostic> diagnostics;                    // sorted by file, position, rule
+  std::optional<std::string> error;                       // unreadable or unsupported file
+
+  const SourceFile& source(FileId id) const { return *sources.at(id); }
+};
+
+enum class FileKind { Urdf, Usda, Unsupported };
+FileKind file_kind(const std::string& path);
+
+// Reads and lints one file.
+FileReport lint_file(const std::string& path, const Settings& settings);
+// Lints text as if it were the file `path` (its extension picks the reader).
+FileReport lint_text(const std::string& path, std::string text, const Settings& settings);
+// Lints files in parallel on `jobs` threads; the reports keep the order of `paths`.
+std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs);
+
+// Files to check for the given paths: files as given, directories searched
+// recursively for *.urdf and *.usda (hidden directories skipped), sorted.
+struct PathExpansion {
+  std::vector<std::string> files;
+  std::vector<std::string> errors;  // paths that do not exist
+};
+PathExpansion expand_paths(const std::vector<std::string>& paths);
+
+}  // namespace assetlint

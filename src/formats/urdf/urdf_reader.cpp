@@ -1,0 +1,347 @@
+#include "formats/urdf/urdf_reader.h"
+
+#include <fmt/format.h>
+#include <tinyxml2.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <unordered_map>
+
+#include "formats/urdf/urdfdom_check.h"
+#include "formats/urdf/xml_scanner.h"
+#include "rules/reader_rules.h"
+#include "util/numbers.h"
+
+namespace assetlint::urdf {
+namespace {
+
+using tinyxml2::XMLElement;
+
+constexpr FileId kFile = 0;
+
+class UrdfReader {
+ public:
+  explicit UrdfReader(std::shared_ptr<const SourceFile> file) : file_(*file) {
+    result_.asset.format = SourceFormat::Urdf;
+    result_.asset.sources.push_back(std::move(file));
+  }
+
+  ReadResult run() {
+    const std::string_view text = file_.view();
+    scan_ = scan_xml(text);
+    for (const auto& problem : scan_.problems) parse_error(file_.span(kFile, problem.offset, problem.length), problem.message);
+    if (!scan_.recoverable) return fail();
+
+    const std::string_view document = text.substr(scan_.document_begin, scan_.document_end - scan_.document_begin);
+    tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
+    if (doc.Parse(document.data(), document.size()) != tinyxml2::XML_SUCCESS) {
+      const int line_in_document = std::max(1, doc.ErrorLineNum());
+      const std::uint32_t line = file_.position(scan_.document_begin).line + static_cast<std::uint32_t>(line_in_document) - 1;
+      parse_error(file_.span(kFile, file_.line_start(line), 0), fmt::format("not well-formed XML: {}", doc.ErrorStr()));
+      return fail();
+    }
+    index_elements(doc.RootElement());
+    const XMLElement* robot = doc.RootElement();
+    if (!robot || std::string_view(robot->Name()) != "robot") {
+      parse_error(element_span(robot),
+                  fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot ? robot->Name() : ""));
+      return fail();
+    }
+    if (find_xacro(robot)) return fail();
+
+    result_.asset.robot_name = name_of(robot);
+    result_.asset.robot_span = element_span(robot);
+    for (const XMLElement* el = robot->FirstChildElement(); el; el = el->NextSiblingElement()) {
+      const std::string_view tag = el->Name();
+      if (tag == "link") read_link(el);
+      else if (tag == "joint") read_joint(el);
+    }
+    check_with_urdfdom(document);
+    return std::move(result_);
+  }
+
+ private:
+  ReadResult fail() {
+    result_.usable = false;
+    return std::move(result_);
+  }
+
+  void parse_error(const Span& span, std::string message) {
+    result_.diagnostics.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity, span,
+                                   std::move(message), std::nullopt});
+  }
+
+  // Pairs each tinyxml2 element with the scanner's start tag: both list elements in
+  // document order, so the n-th element of a pre-order walk is the n-th start tag.
+  void index_elements(const XMLElement* root) {
+    std::size_t next = 0;
+    bool consistent = true;
+    auto visit = [&](auto&& self, const XMLElement* el) -> void {
+      if (!el) return;
+      if (next < scan_.tags.size() && scan_.tags[next].name == el->Name()) tags_[el] = &scan_.tags[next];
+      else consistent = false;
+      ++next;
+      for (const XMLElement* c = el->FirstChildElement(); c; c = c->NextSiblingElement()) self(self, c);
+    };
+    visit(visit, root);
+    if (!consistent) tags_.clear();  // positions fall back to line starts
+  }
+
+  Span element_span(const XMLElement* el) const {
+    if (!el) return file_.span(kFile, scan_.document_begin, 0);
+    if (auto it = tags_.find(el); it != tags_.end())
+      return file_.span(kFile, it->second->offset, it->second->end - it->second->offset);
+    const auto line = file_.position(scan_.document_begin).line + static_cast<std::uint32_t>(el->GetLineNum()) - 1;
+    return file_.span(kFile, file_.line_start(line), 0);
+  }
+
+  // The span of an attribute's value without surrounding spaces.
+  Span value_span(const XMLElement* el, std::string_view attr) const {
+    auto it = tags_.find(el);
+    if (it == tags_.end()) return element_span(el);
+    const XmlAttributeSpan* a = it->second->attribute(attr);
+    if (!a) return element_span(el);
+    const std::string_view raw = file_.view().substr(a->value_offset, a->value_length);
+    const std::string_view trimmed = trim(raw);
+    const std::size_t lead = trimmed.empty() ? 0 : static_cast<std::size_t>(trimmed.data() - raw.data());
+    return file_.span(kFile, a->value_offset + lead, trimmed.size());
+  }
+
+  Name name_of(const XMLElement* el) const {
+    const char* name = el->Attribute("name");
+    return Name{name ? std::string(trim(name)) : std::string(), name ? value_span(el, "name") : element_span(el)};
+  }
+
+  OptQuantity quantity(const XMLElement* el, const char* attr, Unit unit) {
+    if (!el) return std::nullopt;
+    const char* raw = el->Attribute(attr);
+    if (!raw) return std::nullopt;
+    const Span span = value_span(el, attr);
+    auto value = parse_double(trim(raw));
+    if (!value) {
+      parse_error(span, fmt::format("<{} {}>: expected a number, found '{}'", el->Name(), attr, raw));
+      return std::nullopt;
+    }
+    Quantity q = Quantity::from_authored(*value, unit, span);
+    q.declaration = attribute_span(el, attr);
+    return q;
+  }
+
+  // The whole `name="value"` text of an attribute.
+  Span attribute_span(const XMLElement* el, std::string_view attr) const {
+    auto it = tags_.find(el);
+    if (it == tags_.end()) return element_span(el);
+    const XmlAttributeSpan* a = it->second->attribute(attr);
+    if (!a) return element_span(el);
+    return file_.span(kFile, a->name_offset, a->value_offset + a->value_length + 1 - a->name_offset);
+  }
+
+  std::optional<Eigen::Vector3d> vector3(const XMLElement* el, const char* attr) {
+    if (!el) return std::nullopt;
+    const char* raw = el->Attribute(attr);
+    if (!raw) return std::nullopt;
+    auto values = parse_doubles(raw);
+    if (!values || values->size() != 3) {
+      parse_error(value_span(el, attr),
+                  fmt::format("<{} {}>: expected three numbers, found '{}'", el->Name(), attr, raw));
+      return std::nullopt;
+    }
+    return Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
+  }
+
+  Eigen::Isometry3d pose(const XMLElement* origin) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    if (!origin) return pose;
+    if (auto xyz = vector3(origin, "xyz")) pose.translation() = *xyz;
+    if (auto rpy = vector3(origin, "rpy")) {
+      // URDF fixed-axis roll, pitch, yaw: R = Rz(yaw) · Ry(pitch) · Rx(roll).
+      pose.linear() = (Eigen::AngleAxisd((*rpy)[2], Eigen::Vector3d::UnitZ()) *
+                       Eigen::AngleAxisd((*rpy)[1], Eigen::Vector3d::UnitY()) *
+                       Eigen::AngleAxisd((*rpy)[0], Eigen::Vector3d::UnitX()))
+                          .toRotationMatrix();
+    }
+    return pose;
+  }
+
+  bool find_xacro(const XMLElement* el) {
+    if (std::string_view(el->Name()).starts_with("xacro:")) {
+      parse_error(element_span(el), fmt::format("unexpanded xacro: <{}>; run `xacro` to produce a URDF first", el->Name()));
+      return true;
+    }
+    for (const tinyxml2::XMLAttribute* a = el->FirstAttribute(); a; a = a->Next()) {
+      const std::string_view value = a->Value();
+      if (value.find("${") != std::string_view::npos || value.find("$(") != std::string_view::npos) {
+        parse_error(value_span(el, a->Name()),
+                    fmt::format("unexpanded xacro expression '{}'; run `xacro` to produce a URDF first", value));
+        return true;
+      }
+    }
+    for (const XMLElement* c = el->FirstChildElement(); c; c = c->NextSiblingElement())
+      if (find_xacro(c)) return true;
+    return false;
+  }
+
+  void read_link(const XMLElement* el) {
+    Link link;
+    link.name = name_of(el);
+    link.span = element_span(el);
+    if (const XMLElement* in = el->FirstChildElement("inertial")) {
+      Inertial inertial;
+      inertial.span = element_span(in);
+      const XMLElement* mass = in->FirstChildElement("mass");
+      auto m = quantity(mass, "value", Unit::Kilogram);
+      inertial.mass = m ? *m : Quantity::unauthored(0.0, Unit::Kilogram);
+      if (!m) inertial.mass.span = mass ? element_span(mass) : inertial.span;
+      inertial.mass_authored = m.has_value();
+      const XMLElement* origin = in->FirstChildElement("origin");
+      const Eigen::Isometry3d frame = pose(origin);
+      inertial.com = frame.translation();
+      inertial.com_span = origin ? element_span(origin) : inertial.span;
+      if (const XMLElement* tensor = in->FirstChildElement("inertia")) {
+        inertial.inertia_span = element_span(tensor);
+        auto component = [&](const char* attr) {
+          auto q = quantity(tensor, attr, Unit::KilogramMeter2);
+          return q ? q->value : 0.0;
+        };
+        const double ixx = component("ixx"), ixy = component("ixy"), ixz = component("ixz");
+        const double iyy = component("iyy"), iyz = component("iyz"), izz = component("izz");
+        Eigen::Matrix3d inertia;
+        inertia << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
+        // The tensor is given in the inertial frame; rotate it into the link frame.
+        inertial.inertia = frame.linear() * inertia * frame.linear().transpose();
+      } else {
+        inertial.inertia_span = inertial.span;
+        inertial.inertia_authored = false;
+      }
+      link.inertial = inertial;
+    }
+    result_.asset.links.push_back(std::move(link));
+  }
+
+  static std::optional<JointType> joint_type(std::string_view text) {
+    if (text == "revolute") return JointType::Revolute;
+    if (text == "continuous") return JointType::Continuous;
+    if (text == "prismatic") return JointType::Prismatic;
+    if (text == "fixed") return JointType::Fixed;
+    if (text == "floating") return JointType::Floating;
+    if (text == "planar") return JointType::Planar;
+    return std::nullopt;
+  }
+
+  void read_joint(const XMLElement* el) {
+    Joint joint;
+    joint.name = name_of(el);
+    joint.span = element_span(el);
+    const char* type = el->Attribute("type");
+    joint.type_span = type ? value_span(el, "type") : joint.span;
+    auto parsed_type = joint_type(type ? trim(type) : std::string_view());
+    if (!parsed_type) return;  // urdfdom reports the unknown type (urdf-invalid); nothing to model
+    joint.type = *parsed_type;
+    const bool angular = is_angular(joint.type);
+
+    auto link_ref = [&](const char* tag) {
+      const XMLElement* ref = el->FirstChildElement(tag);
+      const char* link = ref ? ref->Attribute("link") : nullptr;
+      return Name{link ? std::string(trim(link)) : std::string(),
+                  link ? value_span(ref, "link") : (ref ? element_span(ref) : joint.span)};
+    };
+    joint.parent = link_ref("parent");
+    joint.child = link_ref("child");
+    joint.frame_in_link[0] = pose(el->FirstChildElement("origin"));
+
+    if (const XMLElement* axis = el->FirstChildElement("axis")) {
+      joint.axis_span = value_span(axis, "xyz");
+      if (auto xyz = vector3(axis, "xyz"); xyz && xyz->norm() > 0) joint.axis = xyz->normalized();
+    } else {
+      joint.axis_span = joint.span;
+    }
+
+    if (const XMLElement* limit = el->FirstChildElement("limit")) {
+      joint.limit_span = element_span(limit);
+      const Unit position = angular ? Unit::Radian : Unit::Meter;
+      joint.lower = quantity(limit, "lower", position);
+      joint.upper = quantity(limit, "upper", position);
+      joint.effort = quantity(limit, "effort", angular ? Unit::NewtonMeter : Unit::Newton);
+      joint.velocity = quantity(limit, "velocity", angular ? Unit::RadianPerSecond : Unit::MeterPerSecond);
+    } else {
+      joint.limit_span = joint.span;
+    }
+    if (const XMLElement* dynamics = el->FirstChildElement("dynamics")) {
+      joint.joint_damping = quantity(dynamics, "damping", angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter);
+      joint.joint_friction = quantity(dynamics, "friction", angular ? Unit::NewtonMeter : Unit::Newton);
+    }
+    if (const XMLElement* mimic = el->FirstChildElement("mimic")) {
+      Mimic m;
+      m.span = element_span(mimic);
+      const char* ref = mimic->Attribute("joint");
+      m.reference = Name{ref ? std::string(trim(ref)) : std::string(), ref ? value_span(mimic, "joint") : m.span};
+      auto multiplier = quantity(mimic, "multiplier", Unit::None);
+      m.multiplier = multiplier ? *multiplier : Quantity::unauthored(1.0, Unit::None);
+      auto offset = quantity(mimic, "offset", angular ? Unit::Radian : Unit::Meter);
+      m.offset = offset ? *offset : Quantity::unauthored(0.0, angular ? Unit::Radian : Unit::Meter);
+      joint.mimic = m;
+    }
+    read_drake_armature(el, joint);
+    result_.asset.joints.push_back(std::move(joint));
+  }
+
+  // Drake's URDF extension models the motor as rotor inertia and gear ratio; the
+  // armature PhysX would see is their reflected inertia G²·I_rotor.
+  void read_drake_armature(const XMLElement* el, Joint& joint) {
+    const XMLElement* actuator = el->FirstChildElement("drake:rotor_inertia");
+    if (!actuator) return;
+    auto rotor = quantity(actuator, "value", Unit::KilogramMeter2);
+    if (!rotor) return;
+    double gear = 1.0;
+    if (auto ratio = quantity(el->FirstChildElement("drake:gear_ratio"), "value", Unit::None)) gear = ratio->value;
+    Quantity armature = *rotor;
+    armature.value = rotor->value * gear * gear;
+    joint.armature = armature;
+  }
+
+  // Runs urdfdom and places each of its complaints on the joint or link it names.
+  void check_with_urdfdom(std::string_view document) {
+    std::vector<std::pair<std::size_t, std::string>> seen;
+    for (const auto& message : urdfdom_errors(document)) {
+      const Span span = locate_message(message);
+      // urdfdom repeats a message once per element it rejects without naming it.
+      if (std::find(seen.begin(), seen.end(), std::pair{span.offset, message}) != seen.end()) continue;
+      seen.emplace_back(span.offset, message);
+      result_.diagnostics.push_back({std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span,
+                                     fmt::format("urdfdom rejects the file: {}", message), std::nullopt});
+    }
+  }
+
+  Span locate_message(std::string_view message) const {
+    std::vector<std::string_view> names;
+    for (std::size_t pos = 0; pos < message.size(); ++pos) {
+      const char open = message[pos];
+      const char close = open == '[' ? ']' : (open == '\'' || open == '"') ? open : '\0';
+      if (!close) continue;
+      const auto end = message.find(close, pos + 1);
+      if (end == std::string_view::npos) break;
+      names.push_back(message.substr(pos + 1, end - pos - 1));
+      pos = end;
+    }
+    for (auto name : names)
+      if (const Joint* j = result_.asset.find_joint(name)) return j->name.span;
+    for (auto name : names)
+      if (const Link* l = result_.asset.find_link(name)) return l->name.span;
+    // A quoted element name ("Unknown geometry type 'capsule'"): its first occurrence.
+    for (auto name : names)
+      for (const auto& tag : scan_.tags)
+        if (tag.name == name) return file_.span(kFile, tag.offset, tag.end - tag.offset);
+    return result_.asset.robot_span;
+  }
+
+  const SourceFile& file_;
+  ReadResult result_;
+  XmlScan scan_;
+  std::unordered_map<const XMLElement*, const XmlStartTag*> tags_;
+};
+
+}  // namespace
+
+ReadResult read_urdf(std::shared_ptr<const SourceFile> file) { return UrdfReader(std::move(file)).run(); }
+
+}  // namespace assetlint::urdf

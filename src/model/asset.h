@@ -1,0 +1,122 @@
+#pragma once
+// The format-neutral robot model every rule reads. All values are in SI/PhysX units
+// (radians, N·m/rad, kg·m², seconds); each keeps the span and unit it was written in.
+#include <Eigen/Geometry>
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/quantity.h"
+#include "model/source.h"
+
+namespace assetlint {
+
+enum class SourceFormat { Urdf, Usda };
+
+struct Name {
+  std::string text;
+  Span span;
+};
+
+struct Inertial {
+  Quantity mass;                                    // kg
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();    // centre of mass in the link frame, m
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // about the COM, in the link frame, kg·m²
+  Span com_span;
+  Span inertia_span;  // the element or attribute holding the tensor
+  Span span;          // the whole <inertial> element / mass API block
+  // USD: physics:mass = 0 or an all-zero diagonalInertia means "let PhysX derive it".
+  bool mass_authored = true;
+  bool inertia_authored = true;
+};
+
+struct Link {
+  Name name;
+  Span span;  // the element or prim
+  std::optional<Inertial> inertial;
+};
+
+enum class JointType { Revolute, Continuous, Prismatic, Fixed, Floating, Planar, Spherical, Generic };
+
+inline bool is_angular(JointType t) { return t == JointType::Revolute || t == JointType::Continuous; }
+inline bool is_single_dof(JointType t) {
+  return t == JointType::Revolute || t == JointType::Continuous || t == JointType::Prismatic;
+}
+
+enum class DriveType { Force, Acceleration };
+
+struct Drive {
+  OptQuantity stiffness;   // N·m/rad (angular) or N/m (linear)
+  OptQuantity damping;     // N·m·s/rad or N·s/m
+  OptQuantity max_force;   // N·m or N; unset = unlimited
+  DriveType type = DriveType::Force;
+  Span type_span;
+  Span span;               // where the drive is declared (schema application or config table)
+  std::string instance;    // USD multiple-apply instance ("angular", "linear", "rotX", ...)
+};
+
+struct Mimic {
+  Name reference;          // the joint it follows
+  // Model convention (URDF's): q = multiplier · q_ref + offset.
+  Quantity multiplier;     // USD gearing is stored negated (Unit::UsdGearing)
+  Quantity offset;         // rad or m
+  OptQuantity natural_frequency;  // rad/s; ≤ 0 = hard constraint
+  OptQuantity damping_ratio;      // ≤ 0 = hard constraint
+  Span span;               // the <mimic> element / the mimic schema application
+  std::string instance;    // USD: rotX / rotY / rotZ
+};
+
+struct Joint {
+  Name name;
+  Span span;               // the element or prim
+  JointType type = JointType::Fixed;
+  Span type_span;
+  Name parent;             // URDF parent / USD body0
+  Name child;              // URDF child / USD body1
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  // unit vector in the joint frame
+  Span axis_span;
+  // The joint frame expressed in each link's frame: [0] parent/body0, [1] child/body1.
+  std::array<Eigen::Isometry3d, 2> frame_in_link{Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity()};
+
+  OptQuantity lower;       // rad or m
+  OptQuantity upper;
+  Span limit_span;         // the <limit> element (URDF) or the joint prim (USD)
+  OptQuantity effort;      // URDF <limit effort>: N·m or N
+  OptQuantity velocity;    // max joint velocity: rad/s or m/s
+  OptQuantity joint_damping;   // URDF <dynamics damping>
+  OptQuantity joint_friction;
+  OptQuantity armature;    // kg·m² or kg
+  std::optional<Drive> drive;
+  std::optional<Mimic> mimic;
+
+  bool is_mimic() const { return mimic.has_value(); }
+};
+
+struct Scene {
+  OptQuantity timesteps_per_second;  // 1/s
+  OptQuantity position_iterations;   // count
+  std::string solver;                // "TGS" / "PGS"; empty = unknown
+  Span solver_span;
+};
+
+// One parsed asset: the files it was read from and the robot they describe.
+struct Asset {
+  SourceFormat format = SourceFormat::Urdf;
+  std::vector<std::shared_ptr<const SourceFile>> sources;  // indexed by FileId; [0] is the file checked
+  Name robot_name;
+  Span robot_span;
+  std::vector<Link> links;
+  std::vector<Joint> joints;
+  Scene scene;
+
+  const Link* find_link(std::string_view name) const;
+  const Joint* find_joint(std::string_view name) const;
+  const SourceFile& source(FileId id) const { return *sources.at(id); }
+};
+
+std::string_view joint_type_name(JointType type);
+
+}  // namespace assetlint

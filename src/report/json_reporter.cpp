@@ -1,0 +1,55 @@
+#include "report/json_reporter.h"
+
+#include <nlohmann/json.hpp>
+
+#include "report/summary.h"
+
+namespace assetlint {
+
+void write_json(std::ostream& out, const std::vector<FileReport>& reports) {
+  using nlohmann::ordered_json;
+  ordered_json diagnostics = ordered_json::array();
+  for (const auto& report : reports) {
+    for (const auto& d : report.diagnostics) {
+      const LineColumn end = end_position(report, d.span);
+      ordered_json item;
+      item["file"] = d.span.file < report.sources.size() ? report.source(d.span.file).path() : report.path;
+      item["line"] = d.span.line;
+      item["column"] = d.span.column;
+      item["end_line"] = end.line;
+      item["end_column"] = end.column;
+      item["rule"] = d.rule;
+      item["severity"] = severity_name(d.severity);
+      item["message"] = d.message;
+      if (d.fix) {
+        ordered_json edits = ordered_json::array();
+        for (const auto& e : d.fix->edits) {
+          const LineColumn at = e.file < report.sources.size() ? report.source(e.file).position(e.offset) : LineColumn{};
+          ordered_json edit;
+          if (e.file != d.span.file && e.file < report.sources.size()) edit["file"] = report.source(e.file).path();
+          edit["offset"] = e.offset;
+          edit["length"] = e.length;
+          edit["replacement"] = e.replacement;
+          edit["line"] = at.line;
+          edit["column"] = at.column;
+          edits.push_back(std::move(edit));
+        }
+        item["fix"] = {{"title", d.fix->title},
+                       {"applicability", applicability_name(d.fix->applicability)},
+                       {"edits", std::move(edits)}};
+      }
+      diagnostics.push_back(std::move(item));
+    }
+  }
+  const Summary s = summarize(reports);
+  ordered_json doc;
+  doc["version"] = 1;
+  doc["tool"] = {{"name", "asset-lint"}, {"version", ASSET_LINT_VERSION}};
+  doc["diagnostics"] = std::move(diagnostics);
+  doc["summary"] = {{"files", s.files},     {"problems", s.total()},  {"errors", s.errors},
+                    {"warnings", s.warnings}, {"infos", s.infos},      {"fixable", s.fixable},
+                    {"unsafe_fixable", s.unsafe_fixable}};
+  out << doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+}
+
+}  // namespace assetlint

@@ -1,0 +1,12 @@
+#pragma once
+#include <ostream>
+#include <vector>
+
+#include "engine/linter.h"
+
+namespace assetlint {
+
+// The stable JSON interface documented in docs/output-formats.md (version 1).
+void write_json(std::ostream& out, const std::vector<FileReport>& reports);
+
+}  // namespace assetlint

@@ -1,0 +1,53 @@
+#include "report/text_reporter.h"
+
+#include <fmt/format.h>
+
+#include "report/summary.h"
+
+namespace assetlint {
+namespace {
+
+const char* severity_color(Severity s) {
+  switch (s) {
+    case Severity::Error: return "\033[1;31m";
+    case Severity::Warning: return "\033[1;35m";
+    case Severity::Info: return "\033[1;36m";
+  }
+  return "";
+}
+
+std::string plural(std::size_t n, std::string_view word) {
+  return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
+}
+
+}  // namespace
+
+void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options) {
+  const char* bold = options.color ? "\033[1m" : "";
+  const char* dim = options.color ? "\033[2m" : "";
+  const char* reset = options.color ? "\033[0m" : "";
+  for (const auto& report : reports) {
+    for (const auto& d : report.diagnostics) {
+      const std::string& path = d.span.file < report.sources.size() ? report.source(d.span.file).path() : report.path;
+      std::string marker;
+      if (d.fix && d.fix->applicability == Applicability::Safe) marker = " (fixable)";
+      else if (d.fix && d.fix->applicability == Applicability::Unsafe) marker = " (unsafe fix)";
+      out << fmt::format("{}{}:{}:{}:{} {}{}:{} {} {}[{}]{}{}\n", bold, path, d.span.line, d.span.column, reset,
+                         options.color ? severity_color(d.severity) : "", severity_name(d.severity), reset, d.message,
+                         dim, d.rule, marker, reset);
+    }
+  }
+  if (!options.show_summary) return;
+  const Summary s = summarize(reports);
+  if (s.total() == 0) {
+    out << fmt::format("No problems found in {}.\n", plural(s.files, "file"));
+    return;
+  }
+  std::string line = fmt::format("Found {} ({}, {}, {}) in {}.", plural(s.total(), "problem"), plural(s.errors, "error"),
+                                 plural(s.warnings, "warning"), plural(s.infos, "info"), plural(s.files, "file"));
+  if (s.fixable || s.unsafe_fixable)
+    line += fmt::format(" {} fixable with --fix ({} more with --unsafe-fixes).", s.fixable, s.unsafe_fixable);
+  out << line << "\n";
+}
+
+}  // namespace assetlint

@@ -1,0 +1,76 @@
+#include "util/numbers.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace assetlint {
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1);
+}
+
+std::optional<double> parse_double(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty()) return std::nullopt;
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end) return std::nullopt;
+  return value;
+}
+
+std::optional<std::vector<double>> parse_doubles(std::string_view text) {
+  std::vector<double> values;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const auto begin = text.find_first_not_of(" \t\r\n", pos);
+    if (begin == std::string_view::npos) break;
+    auto end = text.find_first_of(" \t\r\n", begin);
+    if (end == std::string_view::npos) end = text.size();
+    auto value = parse_double(text.substr(begin, end - begin));
+    if (!value) return std::nullopt;
+    values.push_back(*value);
+    pos = end;
+  }
+  return values;
+}
+
+std::string format_number(double value, int significant) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  if (value == 0.0) return "0";
+  char buffer[64];
+  // Round to the requested precision first, then print that rounded value in plain
+  // positional notation with no trailing zeros.
+  std::snprintf(buffer, sizeof buffer, "%.*e", significant - 1, value);
+  const double rounded = std::strtod(buffer, nullptr);
+  const double magnitude = std::fabs(rounded);
+  if (magnitude >= 1e-4 && magnitude < 1e15) {
+    const int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    const int decimals = std::max(0, significant - 1 - exponent);
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, rounded);
+    std::string text = buffer;
+    if (text.find('.') != std::string::npos) {
+      while (text.back() == '0') text.pop_back();
+      if (text.back() == '.') text.pop_back();
+    }
+    if (text == "-0") text = "0";
+    return text;
+  }
+  // Tiny or huge: exponent form, with a trimmed mantissa.
+  std::string text = buffer;
+  const auto e = text.find('e');
+  std::string mantissa = text.substr(0, e);
+  if (mantissa.find('.') != std::string::npos) {
+    while (mantissa.back() == '0') mantissa.pop_back();
+    if (mantissa.back() == '.') mantissa.pop_back();
+  }
+  const int exponent = std::atoi(text.c_str() + e + 1);
+  return mantissa + "e" + std::to_string(exponent);
+}
+
+}  // namespace assetlint

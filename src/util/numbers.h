@@ -1,0 +1,20 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace assetlint {
+
+// Parses a whole string as one floating-point number (leading '+' allowed, no spaces).
+std::optional<double> parse_double(std::string_view text);
+// Parses whitespace-separated numbers; nullopt if any token is not a number.
+std::optional<std::vector<double>> parse_doubles(std::string_view text);
+std::string_view trim(std::string_view text);
+
+// Shortest decimal text that reads back as `value` at `significant` digits of precision
+// (e.g. 275.86206896551727 at 3 digits -> "276", 0.0612 -> "0.0612"), never in
+// exponent form for ordinary magnitudes.
+std::string format_number(double value, int significant = 6);
+
+}  // namespace assetlint
