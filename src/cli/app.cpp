@@ -89,8 +89,10 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   bool show_rules = false, show_version = false;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   app.add_option("paths", paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
-  app.add_option("--select", select, "Only these rules (comma list, globs such as 'mimic-*')")->delimiter(',');
-  app.add_option("--ignore", ignore, "Skip these rules (comma list, globs)")->delimiter(',');
+  app.add_option("--select", select, "Only these rules (comma list, globs such as 'mimic-*')")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  app.add_option("--ignore", ignore, "Skip these rules (comma list, globs)")->delimiter(',')->allow_extra_args(false);
   app.add_option("--output-format", format, "Output format")->check(CLI::IsMember({"text", "json"}));
   app.add_option("--color", color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
   app.add_option("-j,--jobs", jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));

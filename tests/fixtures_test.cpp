@@ -1,0 +1,53 @@
+// Data-driven test over fixtures/: every asset file has a sibling `<file>.expected`
+// holding the exact text diagnostics (paths relative to fixtures/, no summary line).
+// ASSET_LINT_UPDATE_EXPECTED=1 rewrites the .expected files (review the diff!).
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <sstream>
+
+#include "engine/linter.h"
+#include "report/text_reporter.h"
+#include "test_support.h"
+
+using namespace assetlint;
+
+namespace {
+
+std::vector<std::filesystem::path> fixture_assets() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(test::fixtures_dir())) {
+    if (entry.is_regular_file() && file_kind(entry.path().string()) != FileKind::Unsupported)
+      files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string render(const std::filesystem::path& file) {
+  const std::string relative = std::filesystem::relative(file, test::fixtures_dir()).generic_string();
+  FileReport report = lint_text(relative, test::read_file(file), Settings{});
+  std::ostringstream out;
+  write_text(out, {report}, TextOptions{false, false});
+  return out.str();
+}
+
+}  // namespace
+
+TEST_CASE("every fixture produces exactly its expected diagnostics", "[fixtures]") {
+  const auto files = fixture_assets();
+  REQUIRE(files.size() >= 10);
+  const bool update = std::getenv("ASSET_LINT_UPDATE_EXPECTED") != nullptr;
+  for (const auto& file : files) {
+    const auto expected_path = std::filesystem::path(file.string() + ".expected");
+    const std::string actual = render(file);
+    if (update) test::write_file(expected_path, actual);
+    INFO("fixture " << file.string());
+    REQUIRE(std::filesystem::exists(expected_path));
+    CHECK(actual == test::read_file(expected_path));
+  }
+}
+
+TEST_CASE("the guide's Robotiq 2F-85 fixture lints clean", "[fixtures]") {
+  CHECK(render(test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf").empty());
+}

@@ -1,0 +1,38 @@
+#pragma once
+// Helpers shared by the test files: paths, file I/O, running the CLI.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace assetlint::test {
+
+inline std::filesystem::path source_dir() { return ASSET_LINT_SOURCE_DIR; }
+inline std::filesystem::path fixtures_dir() { return source_dir() / "fixtures"; }
+// ../shared/corpus beside the repository; empty when it is absent.
+std::filesystem::path corpus_dir();
+
+std::string read_file(const std::filesystem::path& path);
+void write_file(const std::filesystem::path& path, const std::string& text);
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+// Runs the built asset-lint binary with `args` (each shell-quoted) in `cwd`.
+CommandResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd = source_dir());
+
+// A fresh empty directory under the system temp dir, removed by the destructor.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace assetlint::test
