@@ -4,11 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "engine/rule.h"
@@ -24,7 +20,7 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
-ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file) {
+ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem&) {
   switch (file_kind(path)) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
     default: break;
@@ -49,7 +45,7 @@ FileKind file_kind(const std::string& path) {
   return FileKind::Unsupported;
 }
 
-FileReport lint_text(const std::string& path, std::string text, const Settings& settings) {
+FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
   FileReport report;
   report.path = path;
   if (file_kind(path) == FileKind::Unsupported) {
@@ -57,7 +53,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
-  ReadResult result = read(path, std::move(file));
+  ReadResult result = read(path, std::move(file), files);
   std::vector<Diagnostic> diagnostics;
   for (auto& d : result.diagnostics)
     if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
@@ -78,23 +74,16 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   return report;
 }
 
-FileReport lint_file(const std::string& path, const Settings& settings) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files) {
+  std::string error;
+  std::optional<std::string> text = files.read(path, error);
+  if (!text) {
     FileReport report;
     report.path = path;
-    report.error = fmt::format("cannot read '{}': {}", path, std::strerror(errno));
+    report.error = fmt::format("cannot read '{}': {}", path, error);
     return report;
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) {
-    FileReport report;
-    report.path = path;
-    report.error = fmt::format("cannot read '{}': read failed", path);
-    return report;
-  }
-  return lint_text(path, std::move(buffer).str(), settings);
+  return lint_text(path, std::move(*text), settings, files);
 }
 
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs) {

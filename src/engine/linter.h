@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/diagnostic.h"
+#include "engine/file_system.h"
 #include "engine/settings.h"
 #include "model/source.h"
 
@@ -24,10 +25,12 @@ struct FileReport {
 enum class FileKind { Urdf, Usda, Unsupported };
 FileKind file_kind(const std::string& path);
 
-// Reads and lints one file.
-FileReport lint_file(const std::string& path, const Settings& settings);
+// Reads and lints one file (through `files`, the disk by default).
+FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files = disk());
 // Lints text as if it were the file `path` (its extension picks the reader).
-FileReport lint_text(const std::string& path, std::string text, const Settings& settings);
+// Other files it refers to (USD layers) are read through `files`.
+FileReport lint_text(const std::string& path, std::string text, const Settings& settings,
+                     const FileSystem& files = disk());
 // Lints files in parallel on `jobs` threads; the reports keep the order of `paths`.
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs);
 
