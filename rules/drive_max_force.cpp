@@ -40,7 +40,8 @@ class DriveMaxForce final : public Rule {
       if (!*force) continue;
       const Quantity& q = **force;
       if (q.value == 0) {
-        out.report(q.span, fmt::format("driven {} has {} 0: the drive cannot move it", joint_label(joint), what));
+        out.report(q.span, fmt::format("driven {} has {} {}: the drive cannot move it", joint_label(joint), what,
+                                       describe(q)));
       } else if (q.value >= placeholder) {
         out.report(q.span,
                    fmt::format("driven {} has {} {}, a placeholder (≥ {}): the drive is effectively unbounded; set "

@@ -12,6 +12,11 @@ namespace {
 // PHYSICS.md §3 and the guide: leave max joint velocity unset on mimic joints; the
 // followed joint's limit already bounds them through the gearing, and a lower
 // limit on the mimic makes the velocity clamp fight the mimic constraint.
+// Relative slack for limits written with fewer digits than the product.
+constexpr double kSlack = 1e-6;
+// USD's maxJointVelocity default (deg/s): authoring it explicitly changes nothing.
+constexpr double kUsdDefaultMaxVelocityDeg = 1e6;
+
 class MimicMaxVelocity final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
@@ -26,6 +31,7 @@ class MimicMaxVelocity final : public Rule {
           reference && is_single_dof(reference->type) && reference->velocity && reference->velocity->value > 0 ? &*reference->velocity : nullptr;
 
       if (asset.format == SourceFormat::Usda) {
+        if (velocity.authored >= kUsdDefaultMaxVelocityDeg) continue;
         // USD can leave the attribute unauthored, which is what the guide asks for.
         std::string comparison =
             reference_velocity
@@ -46,7 +52,7 @@ class MimicMaxVelocity final : public Rule {
 
       if (!reference_velocity) continue;
       const double needed = gearing * reference_velocity->value;
-      if (velocity.value >= needed * (1 - 1e-9)) continue;
+      if (velocity.value >= needed * (1 - kSlack)) continue;
       Diagnostic& d = out.report(
           velocity.span,
           fmt::format("mimic {} is limited to {}, below |multiplier {}| × {} of '{}' = {}: the velocity clamp "
@@ -54,7 +60,8 @@ class MimicMaxVelocity final : public Rule {
                       joint_label(joint), describe(velocity), format_number(joint.mimic->multiplier.authored),
                       describe(*reference_velocity), reference->name.text, describe(needed, velocity.unit)));
       d.fix = Fix{fmt::format("raise the limit to {}", describe(needed, velocity.unit)), Applicability::Safe,
-                  {replace_value(velocity, needed)}};
+                  {Edit{velocity.span.file, velocity.span.offset, velocity.span.length,
+                        format_number_at_least(velocity.authored_for(needed))}}};
     }
   }
 

@@ -17,16 +17,17 @@ class UnitsAngleDegrees final : public Rule {
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double min_magnitude = rule_option(info_, settings, "min_magnitude_rad");
     const double pi_tolerance = rule_option(info_, settings, "pi_multiple_tolerance");
+    const double max_magnitude = rule_option(info_, settings, "max_magnitude_deg");
     for (const Joint& joint : asset.joints) {
       if (joint.type != JointType::Revolute || !joint.lower || !joint.upper) continue;
       const Quantity& lower = *joint.lower;
       const Quantity& upper = *joint.upper;
       if (lower.unit != Unit::Radian || upper.unit != Unit::Radian) continue;
       const double largest = std::max(std::fabs(lower.value), std::fabs(upper.value));
-      if (largest <= min_magnitude || largest > 360.0) continue;
-      // Multiples of π (±31.4, ±3π) are deliberate radian values: multi-turn ranges or
-      // "no limit" placeholders, not degrees.
-      if (near_pi_multiple(lower.value, pi_tolerance) && near_pi_multiple(upper.value, pi_tolerance)) continue;
+      if (largest <= min_magnitude || largest > max_magnitude) continue;
+      // Multiples of π written as decimals (±31.4, ±9.42478) are deliberate radian values:
+      // multi-turn ranges or "no limit" placeholders. Whole numbers (44, 90) are degrees.
+      if (radian_like(lower.value, pi_tolerance) && radian_like(upper.value, pi_tolerance)) continue;
       const double lower_rad = radians_from_degrees(lower.authored);
       const double upper_rad = radians_from_degrees(upper.authored);
       Diagnostic& d = out.report(
@@ -44,9 +45,11 @@ class UnitsAngleDegrees final : public Rule {
   }
 
  private:
-  static bool near_pi_multiple(double value, double tolerance) {
-    const double turns = value / std::numbers::pi;
-    return std::fabs(turns - std::round(turns)) <= tolerance;
+  static bool radian_like(double value, double tolerance) {
+    if (value == 0) return true;
+    if (value == std::round(value)) return false;
+    const double halfturns = value / std::numbers::pi;
+    return std::fabs(halfturns - std::round(halfturns)) <= tolerance;
   }
 
   RuleInfo info_{"units-angle-degrees",
@@ -56,8 +59,10 @@ class UnitsAngleDegrees final : public Rule {
                  RuleOrigin::Check,
                  {{"min_magnitude_rad", 4 * std::numbers::pi,
                    "a limit must exceed this magnitude (radians; default 4π, two turns) to be read as degrees"},
+                  {"max_magnitude_deg", 360.0, "limits larger than this are not read as degrees either"},
                   {"pi_multiple_tolerance", 0.01,
-                   "limits within this fraction of a multiple of π are taken as deliberate radians"}}};
+                   "a non-integer limit whose multiple of π is within this (in units of π) of a whole number is "
+                   "taken as deliberate radians"}}};
 };
 
 }  // namespace

@@ -18,7 +18,10 @@ TEST_CASE("format_number writes the shortest text at the requested precision", "
   CHECK(format_number(0.0612) == "0.0612");
   CHECK(format_number(3.37e-6) == "3.37e-6");
   CHECK(format_number(2.1e-6, 4) == "2.1e-6");
-  CHECK(format_number(1e9) == "1000000000");
+  CHECK(format_number(1e9) == "1e9");
+  CHECK(format_number(12345678.0) == "1.23457e7");
+  CHECK(format_number(1234567.0) == "1234570");
+  CHECK(format_number(999999.0) == "999999");
   CHECK(format_number(0.0) == "0");
   CHECK(format_number(-0.0000001, 2) == "-1e-7");
   CHECK(format_number(std::numeric_limits<double>::infinity()) == "inf");

@@ -49,7 +49,7 @@ std::string format_number(double value, int significant) {
   std::snprintf(buffer, sizeof buffer, "%.*e", significant - 1, value);
   const double rounded = std::strtod(buffer, nullptr);
   const double magnitude = std::fabs(rounded);
-  if (magnitude >= 1e-4 && magnitude < 1e15) {
+  if (magnitude >= 1e-4 && magnitude < 1e7) {
     const int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
     const int decimals = std::max(0, significant - 1 - exponent);
     std::snprintf(buffer, sizeof buffer, "%.*f", decimals, rounded);
@@ -71,6 +71,14 @@ std::string format_number(double value, int significant) {
   }
   const int exponent = std::atoi(text.c_str() + e + 1);
   return mantissa + "e" + std::to_string(exponent);
+}
+
+std::string format_number_at_least(double value, int significant) {
+  for (int digits = significant; digits < 17; ++digits) {
+    std::string text = format_number(value, digits);
+    if (auto back = parse_double(text); back && *back >= value) return text;
+  }
+  return format_number(value, 17);
 }
 
 }  // namespace assetlint

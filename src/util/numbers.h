@@ -16,5 +16,7 @@ std::string_view trim(std::string_view text);
 // (e.g. 275.86206896551727 at 3 digits -> "276", 0.0612 -> "0.0612"), never in
 // exponent form for ordinary magnitudes.
 std::string format_number(double value, int significant = 6);
+// Like format_number, but never below `value` (adds digits until the text reads back ≥ value).
+std::string format_number_at_least(double value, int significant = 6);
 
 }  // namespace assetlint

@@ -302,7 +302,11 @@ class UrdfReader {
   // Runs urdfdom and places each of its complaints on the joint or link it names.
   void check_with_urdfdom(std::string_view document) {
     std::vector<std::pair<std::size_t, std::string>> seen;
-    for (const auto& message : urdfdom_errors(document)) {
+    std::vector<std::string> messages = urdfdom_errors(document);
+    // urdfdom's generic epilogue says nothing the specific messages before it do not.
+    if (messages.size() > 1)
+      std::erase(messages, std::string("joint xml is not initialized correctly"));
+    for (const auto& message : messages) {
       const Span span = locate_message(message);
       // urdfdom repeats a message once per element it rejects without naming it.
       if (std::find(seen.begin(), seen.end(), std::pair{span.offset, message}) != seen.end()) continue;
@@ -327,6 +331,12 @@ class UrdfReader {
       if (const Joint* j = result_.asset.find_joint(name)) return j->name.span;
     for (auto name : names)
       if (const Link* l = result_.asset.find_link(name)) return l->name.span;
+    // An element the model leaves out (a joint of unknown type): its name attribute.
+    for (auto name : names)
+      for (const auto& tag : scan_.tags)
+        if (const XmlAttributeSpan* a = tag.attribute("name");
+            a && trim(file_.view().substr(a->value_offset, a->value_length)) == name)
+          return file_.span(kFile, a->value_offset, a->value_length);
     // A quoted element name ("Unknown geometry type 'capsule'"): its first occurrence.
     for (auto name : names)
       for (const auto& tag : scan_.tags)

@@ -1,0 +1,115 @@
+#include "fix/command.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+#include "fix/diff.h"
+#include "fix/fixer.h"
+#include "fix/writer.h"
+#include "report/summary.h"
+
+namespace assetlint::fix {
+namespace {
+
+constexpr int kExitClean = 0;
+constexpr int kExitFindings = 1;
+constexpr int kExitError = 2;
+
+struct Target {
+  std::string path;
+  EditScope scope;
+};
+
+std::string problems(std::size_t n) { return fmt::format("{} problem{}", n, n == 1 ? "" : "s"); }
+
+std::string diff_label(const char* prefix, const std::string& path) {
+  std::string p = path;
+  while (p.starts_with("./")) p.erase(0, 2);
+  return prefix + p;
+}
+
+}  // namespace
+
+int run_fix_command(const std::vector<std::string>& paths, const Settings& settings,
+                    const FixCommandOptions& options, std::ostream& out, std::ostream& err,
+                    const std::function<void(const std::vector<FileReport>&)>& write_report) {
+  bool failed = false;
+  // Each file may be edited within the tree it was found in: a directory argument's
+  // tree, or a file argument's own directory.
+  std::vector<Target> targets;
+  for (const auto& argument : paths) {
+    PathExpansion expansion = expand_paths({argument});
+    for (const auto& message : expansion.errors) {
+      err << "asset-lint: error: " << message << "\n";
+      failed = true;
+    }
+    for (auto& file : expansion.files) {
+      EditScope scope = file == argument ? default_scope(file) : tree_scope(argument);
+      targets.push_back({std::move(file), std::move(scope)});
+    }
+  }
+
+  std::vector<FixResult> results(targets.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < targets.size(); i = next++) {
+      FixOptions fix_options;
+      fix_options.unsafe = options.unsafe;
+      fix_options.scope = targets[i].scope;
+      results[i] = fix_file(targets[i].path, settings, fix_options);
+    }
+  };
+  const unsigned jobs = std::max(1u, std::min<unsigned>(options.jobs, static_cast<unsigned>(targets.size())));
+  std::vector<std::thread> threads;
+  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+
+  bool any_diff = false;
+  std::vector<FileReport> remaining;
+  for (FixResult& result : results) {
+    for (const auto& message : result.internal_errors) err << "asset-lint: internal error: " << message << "\n";
+    for (const auto& message : result.notes) err << "asset-lint: note: " << message << "\n";
+    if (result.error) {
+      err << "asset-lint: error: " << *result.error << "\n";
+      failed = true;
+      if (!result.initial.error) remaining.push_back(std::move(result.initial));
+      continue;
+    }
+    if (options.diff) {
+      for (const FixedFile& file : result.files) {
+        out << unified_diff(file.original, file.fixed, diff_label("a/", file.path), diff_label("b/", file.path));
+        err << fmt::format("asset-lint: would fix {} in {}\n", problems(file.fixes), file.path);
+        any_diff = true;
+      }
+      continue;
+    }
+    bool write_failed = false;
+    for (const FixedFile& file : result.files) {
+      if (auto message = write_fixed_file(file)) {
+        err << "asset-lint: error: " << *message << "\n";
+        write_failed = true;
+        continue;
+      }
+      err << fmt::format("asset-lint: fixed {} in {}\n", problems(file.fixes), file.path);
+    }
+    if (write_failed) {
+      failed = true;
+      // Report what is on disk now.
+      remaining.push_back(lint_file(result.path, settings));
+    } else {
+      remaining.push_back(std::move(result.remaining));
+    }
+  }
+
+  if (options.diff) return failed ? kExitError : any_diff ? kExitFindings : kExitClean;
+  std::erase_if(remaining, [](const FileReport& r) { return r.error.has_value(); });
+  write_report(remaining);
+  if (failed) return kExitError;
+  return summarize(remaining).total() == 0 ? kExitClean : kExitFindings;
+}
+
+}  // namespace assetlint::fix

@@ -1,0 +1,29 @@
+#pragma once
+// `asset-lint --fix` / `--diff`: fixes every file the paths name, writes (or diffs)
+// the results, reports what remains. Called by the CLI after option parsing.
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "engine/linter.h"
+#include "engine/settings.h"
+
+namespace assetlint::fix {
+
+struct FixCommandOptions {
+  bool diff = false;    // print a unified diff instead of writing
+  bool unsafe = false;  // --unsafe-fixes
+  unsigned jobs = 1;
+};
+
+// Fixes the files under `paths` (directories searched as for checking). With `diff`,
+// prints unified diffs to `out` and writes nothing; returns 1 when there is a diff, 0
+// when none, 2 on errors. Otherwise writes the fixed files, prints what remains with
+// `write_report`, and returns 0 when nothing remains, 1 when findings remain, 2 on
+// read/write errors or fixes that do not converge. Per-file progress and errors go to `err`.
+int run_fix_command(const std::vector<std::string>& paths, const Settings& settings,
+                    const FixCommandOptions& options, std::ostream& out, std::ostream& err,
+                    const std::function<void(const std::vector<FileReport>&)>& write_report);
+
+}  // namespace assetlint::fix
