@@ -20,8 +20,48 @@ struct RuleSelection {
 
 bool glob_match(std::string_view pattern, std::string_view text);
 
+// A value from configuration with where it was set ("asset-lint.toml:12", "--position-iterations").
+template <typename T>
+struct Configured {
+  T value{};
+  std::string origin;
+};
+
+struct SimulationSettings {
+  std::optional<Configured<double>> timesteps_per_second;
+  std::optional<Configured<double>> position_iterations;
+  std::optional<Configured<std::string>> solver;  // "TGS" or "PGS"
+};
+
+// The gripper's spec sheet, from which the guide derives force and velocity limits.
+struct GripperSpec {
+  std::optional<Configured<double>> payload_kg;
+  std::optional<Configured<double>> friction;
+  std::optional<Configured<double>> lever_arm_m;
+  Configured<double> gravity{9.81, "default"};
+  std::optional<Configured<double>> finger_speed_m_s;
+  std::optional<Configured<double>> stroke_m;
+  Configured<double> target_delta_deg{5.0, "default"};
+  std::optional<Configured<std::string>> driven_joint;
+};
+
+// Drive gains for formats that carry none (URDF), as an importer or actuator config sets them.
+// PhysX units: N·m/rad, N·m·s/rad, kg·m², N·m (N/m, N·s/m, kg, N for prismatic joints).
+struct DriveSettings {
+  std::optional<Configured<double>> stiffness;
+  std::optional<Configured<double>> damping;
+  std::optional<Configured<double>> armature;
+  std::optional<Configured<double>> max_force;
+  std::optional<Configured<std::string>> type;  // "force" or "acceleration"
+  std::string origin;                            // the [drives.<joint>] table
+};
+
 struct Settings {
   RuleSelection selection;
+  SimulationSettings simulation;
+  GripperSpec gripper;
+  std::map<std::string, DriveSettings, std::less<>> drives;
+  std::string config_path;  // the asset-lint.toml in effect; empty when none
   std::map<std::string, Severity, std::less<>> severity_overrides;
   std::map<std::string, std::map<std::string, double, std::less<>>, std::less<>> rule_options;
 

@@ -56,6 +56,7 @@ struct Drive {
   Span type_span;
   Span span;               // where the drive is declared (schema application or config table)
   std::string instance;    // USD multiple-apply instance ("angular", "linear", "rotX", ...)
+  std::string origin;      // where a drive the file does not hold came from ("asset-lint.toml:14")
 };
 
 struct Mimic {

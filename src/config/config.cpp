@@ -1,0 +1,203 @@
+#include "config/config.h"
+
+#include <fmt/format.h>
+
+#include <toml++/toml.h>
+
+#include "rules/registry.h"
+
+namespace assetlint::config {
+namespace {
+
+// Thrown inside the loader; turned into a ConfigError at the top.
+struct Invalid {
+  toml::source_region where;
+  std::string message;
+};
+
+class Loader {
+ public:
+  Loader(std::string path, Settings& settings) : path_(std::move(path)), settings_(settings) {}
+
+  void load(const toml::table& root) {
+    for (const auto& [key, node] : root) {
+      const std::string_view name = key.str();
+      if (name == "select") settings_.selection.select = rule_patterns(node, name);
+      else if (name == "ignore") settings_.selection.ignore = rule_patterns(node, name);
+      else if (name == "simulation") simulation(table(node, name));
+      else if (name == "gripper") gripper(table(node, name));
+      else if (name == "drives") drives(table(node, name));
+      else if (name == "rules") rules(table(node, name));
+      else unknown(node, name, "");
+    }
+  }
+
+ private:
+  std::string origin(const toml::node& node) const {
+    return fmt::format("{}:{}", path_, node.source().begin.line);
+  }
+
+  [[noreturn]] void fail(const toml::node& node, std::string message) const { throw Invalid{node.source(), std::move(message)}; }
+
+  [[noreturn]] void unknown(const toml::node& node, std::string_view key, std::string_view table_name) const {
+    fail(node, table_name.empty() ? fmt::format("unknown key '{}'", key)
+                                  : fmt::format("unknown key '{}' in [{}]", key, table_name));
+  }
+
+  const toml::table& table(const toml::node& node, std::string_view name) const {
+    if (const auto* t = node.as_table()) return *t;
+    fail(node, fmt::format("'{}' must be a table", name));
+  }
+
+  double number(const toml::node& node, std::string_view key, double min, bool min_exclusive) const {
+    std::optional<double> value;
+    if (const auto* i = node.as_integer()) value = static_cast<double>(i->get());
+    else if (const auto* f = node.as_floating_point()) value = f->get();
+    if (!value) fail(node, fmt::format("'{}' must be a number", key));
+    if (*value < min || (min_exclusive && *value == min) || std::isnan(*value))
+      fail(node, fmt::format("'{}' must be {} {}, got {}", key, min_exclusive ? ">" : "≥", min, *value));
+    return *value;
+  }
+
+  std::optional<Configured<double>> positive(const toml::node& node, std::string_view key) const {
+    return Configured<double>{number(node, key, 0.0, true), origin(node)};
+  }
+  std::optional<Configured<double>> non_negative(const toml::node& node, std::string_view key) const {
+    return Configured<double>{number(node, key, 0.0, false), origin(node)};
+  }
+
+  std::string string(const toml::node& node, std::string_view key) const {
+    if (const auto* s = node.as_string()) return s->get();
+    fail(node, fmt::format("'{}' must be a string", key));
+  }
+
+  std::string choice(const toml::node& node, std::string_view key, std::initializer_list<std::string_view> allowed) const {
+    std::string value = string(node, key);
+    for (auto a : allowed)
+      if (value == a) return value;
+    std::string list;
+    for (auto a : allowed) list += (list.empty() ? "" : ", ") + fmt::format("\"{}\"", a);
+    fail(node, fmt::format("'{}' must be one of {}, got \"{}\"", key, list, value));
+  }
+
+  std::vector<std::string> rule_patterns(const toml::node& node, std::string_view key) const {
+    const auto* array = node.as_array();
+    if (!array) fail(node, fmt::format("'{}' must be an array of rule ids or globs", key));
+    std::vector<std::string> patterns;
+    for (const auto& item : *array) {
+      std::string pattern = string(item, key);
+      bool matched = false;
+      for (const RuleInfo* rule : rules::catalog()) matched = matched || glob_match(pattern, rule->id);
+      if (!matched) fail(item, fmt::format("'{}' matches no rule", pattern));
+      patterns.push_back(std::move(pattern));
+    }
+    return patterns;
+  }
+
+  void simulation(const toml::table& t) {
+    for (const auto& [key, node] : t) {
+      const std::string_view k = key.str();
+      if (k == "timesteps_per_second") settings_.simulation.timesteps_per_second = positive(node, k);
+      else if (k == "position_iterations") {
+        const double n = number(node, k, 1.0, false);
+        if (n != std::floor(n) || n > 255) fail(node, "'position_iterations' must be a whole number from 1 to 255");
+        settings_.simulation.position_iterations = Configured<double>{n, origin(node)};
+      } else if (k == "solver") settings_.simulation.solver = Configured<std::string>{choice(node, k, {"TGS", "PGS"}), origin(node)};
+      else unknown(node, k, "simulation");
+    }
+  }
+
+  void gripper(const toml::table& t) {
+    GripperSpec& g = settings_.gripper;
+    for (const auto& [key, node] : t) {
+      const std::string_view k = key.str();
+      if (k == "payload_kg") g.payload_kg = positive(node, k);
+      else if (k == "friction") g.friction = positive(node, k);
+      else if (k == "lever_arm_m") g.lever_arm_m = positive(node, k);
+      else if (k == "gravity") g.gravity = *positive(node, k);
+      else if (k == "finger_speed_m_s") g.finger_speed_m_s = positive(node, k);
+      else if (k == "stroke_m") g.stroke_m = positive(node, k);
+      else if (k == "target_delta_deg") g.target_delta_deg = *positive(node, k);
+      else if (k == "driven_joint") g.driven_joint = Configured<std::string>{string(node, k), origin(node)};
+      else unknown(node, k, "gripper");
+    }
+  }
+
+  void drives(const toml::table& t) {
+    for (const auto& [joint, node] : t) {
+      const std::string table_name = fmt::format("drives.{}", joint.str());
+      DriveSettings drive;
+      drive.origin = origin(node);
+      for (const auto& [key, value] : table(node, table_name)) {
+        const std::string_view k = key.str();
+        if (k == "stiffness") drive.stiffness = non_negative(value, k);
+        else if (k == "damping") drive.damping = non_negative(value, k);
+        else if (k == "armature") drive.armature = non_negative(value, k);
+        else if (k == "max_force") drive.max_force = non_negative(value, k);
+        else if (k == "type") drive.type = Configured<std::string>{choice(value, k, {"force", "acceleration"}), origin(value)};
+        else unknown(value, k, table_name);
+      }
+      settings_.drives[std::string(joint.str())] = std::move(drive);
+    }
+  }
+
+  void rules(const toml::table& t) {
+    for (const auto& [id, node] : t) {
+      const RuleInfo* rule = rules::find_rule(id.str());
+      if (!rule) fail(node, fmt::format("unknown rule '{}' in [rules]", id.str()));
+      const std::string table_name = fmt::format("rules.{}", id.str());
+      for (const auto& [key, value] : table(node, table_name)) {
+        const std::string_view k = key.str();
+        if (k == "severity") {
+          settings_.severity_overrides[std::string(rule->id)] =
+              *parse_severity(choice(value, k, {"info", "warning", "error"}));
+          continue;
+        }
+        bool known = false;
+        for (const auto& option : rule->options) known = known || option.name == k;
+        if (!known) unknown(value, k, table_name);
+        settings_.rule_options[std::string(rule->id)][std::string(k)] = number(value, k, -INFINITY, false);
+      }
+    }
+  }
+
+  std::string path_;
+  Settings& settings_;
+};
+
+}  // namespace
+
+std::string ConfigError::to_string() const {
+  return line ? fmt::format("{}:{}:{}: {}", path, line, column, message) : fmt::format("{}: {}", path, message);
+}
+
+std::optional<ConfigError> load(const std::string& path, Settings& settings) {
+  Settings updated = settings;
+  try {
+    toml::table root = toml::parse_file(path);
+    Loader(path, updated).load(root);
+  } catch (const toml::parse_error& error) {
+    return ConfigError{path, static_cast<std::uint32_t>(error.source().begin.line),
+                       static_cast<std::uint32_t>(error.source().begin.column), std::string(error.description())};
+  } catch (const Invalid& invalid) {
+    return ConfigError{path, static_cast<std::uint32_t>(invalid.where.begin.line),
+                       static_cast<std::uint32_t>(invalid.where.begin.column), invalid.message};
+  }
+  updated.config_path = path;
+  settings = std::move(updated);
+  return std::nullopt;
+}
+
+std::filesystem::path discover(const std::filesystem::path& file) {
+  std::error_code ec;
+  std::filesystem::path dir = std::filesystem::absolute(file, ec).parent_path();
+  while (!dir.empty()) {
+    const auto candidate = dir / kFileName;
+    if (std::filesystem::is_regular_file(candidate, ec)) return std::filesystem::proximate(candidate, ec);
+    if (dir == dir.root_path()) break;
+    dir = dir.parent_path();
+  }
+  return {};
+}
+
+}  // namespace assetlint::config

@@ -1,0 +1,29 @@
+#pragma once
+// asset-lint.toml: found by walking up from each checked file, or named with --config.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/settings.h"
+
+namespace assetlint::config {
+
+struct ConfigError {
+  std::string path;
+  std::uint32_t line = 0;
+  std::uint32_t column = 0;
+  std::string message;
+  std::string to_string() const;  // "path:line:col: message"
+};
+
+// Reads a configuration file into `settings` (on top of what it holds).
+// Unknown keys and bad values are errors; nothing is applied when there is one.
+std::optional<ConfigError> load(const std::string& path, Settings& settings);
+
+// The nearest asset-lint.toml in the file's directory or an ancestor; empty if none.
+std::filesystem::path discover(const std::filesystem::path& file);
+
+inline constexpr const char* kFileName = "asset-lint.toml";
+
+}  // namespace assetlint::config
