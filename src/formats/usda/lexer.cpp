@@ -50,10 +50,8 @@ Header Lexer::read_header() {
   while (p < text_.size() && !is_space(static_cast<unsigned char>(text_[p]))) ++p;
   h.version = text_.substr(vstart, p - vstart);
   h.version_offset = vstart;
-  while (p < text_.size() && (text_[p] == ' ' || text_[p] == '\t')) ++p;
-  const bool at_eol = p == text_.size() || text_[p] == '\n' || text_[p] == '\r';
-  h.ok = vstart > after_magic && !h.version.empty() && is_digit(static_cast<unsigned char>(h.version[0])) && at_eol;
-  // The rest of the header line is a comment in practice; skip it either way.
+  // Anything after the version on the header line is treated as a comment.
+  h.ok = vstart > after_magic && !h.version.empty() && is_digit(static_cast<unsigned char>(h.version[0]));
   while (p < text_.size() && text_[p] != '\n' && text_[p] != '\r') ++p;
   h.body_offset = p;
   pos_ = p;

@@ -160,6 +160,13 @@ class Parser {
     return t;
   }
 
+  // A statement (metadata item, property, dictionary entry) ends at a line break, a ';',
+  // or the bracket closing its block.
+  void end_statement(TokenKind closer, const std::string& what) {
+    if (is(TokenKind::Semicolon) || is(closer) || is(TokenKind::End) || (tok_.flags & kTokenNewlineBefore) != 0) return;
+    fail_here("expected a line break or ';' after " + what);
+  }
+
   struct DepthGuard {
     Parser& p;
     explicit DepthGuard(Parser& parser) : p(parser) {
@@ -228,7 +235,7 @@ Layer Parser::parse_layer() {
     if (text_.compare(start, 5, "#usda") != 0 || text_.size() < start + 5) {
       fail_at("missing '#usda 1.0' header on the first line", start, 0);
     }
-    fail_at("malformed header: expected '#usda <version>' alone on the first line", start, h.body_offset - start);
+    fail_at("malformed header: expected '#usda <version>' on the first line", start, h.body_offset - start);
   }
   layer.version = std::string(h.version);
   {
@@ -276,6 +283,7 @@ void Parser::parse_metadata_block(std::vector<Metadata>& out, const char* owner)
       fail_at(std::string("unterminated ") + owner + " metadata: missing ')' for the '(' here", open.offset, 1);
     }
     out.push_back(parse_metadata_item());
+    end_statement(TokenKind::RParen, "metadata '" + out.back().key + "'");
   }
 }
 
@@ -617,6 +625,7 @@ Value Parser::parse_dictionary() {
     }
     close(e.span);
     v.entries.push_back(std::move(e));
+    if (!is(TokenKind::Comma)) end_statement(TokenKind::RBrace, "dictionary entry '" + v.entries.back().key + "'");
   }
   consume();
   v.count = v.entries.size();
@@ -930,6 +939,10 @@ void Parser::parse_property(Prim& prim, NameIndex& index) {
       attr->spline = skip_braced_block();
     }
   } else {
+    if (!is(TokenKind::Equals) && !is(TokenKind::LParen) && !is(TokenKind::Semicolon) && !is(TokenKind::RBrace) &&
+        (tok_.flags & kTokenNewlineBefore) == 0) {
+      fail_here("expected '=' after attribute name '" + std::string(name) + "'");
+    }
     if (is(TokenKind::Equals)) {
       consume();
       if (is(TokenKind::RParen) || is(TokenKind::RBrace) || is(TokenKind::End) || is(TokenKind::Semicolon) ||
@@ -940,6 +953,7 @@ void Parser::parse_property(Prim& prim, NameIndex& index) {
       attr->default_value = std::move(v);
     }
     if (is(TokenKind::LParen)) parse_metadata_block(attr->metadata, "attribute");
+    end_statement(TokenKind::RBrace, "attribute '" + std::string(name) + "'");
     close(decl);
     if (attr->default_value) attr->default_declaration_span = decl;
   }
@@ -1014,6 +1028,7 @@ void Parser::parse_relationship(Prim& prim, NameIndex& index, ListOp op, Span st
       if (is(TokenKind::LParen)) parse_metadata_block(rel->metadata, "relationship");
     }
   }
+  end_statement(TokenKind::RBrace, "relationship '" + std::string(name) + "'");
   if (rel->span.offset == start.offset) close(rel->span);
 }
 
