@@ -43,33 +43,33 @@ struct Failure {
   ParseError error;
 };
 
-// Turns byte offsets into Spans. Most requests come in increasing order, so it walks
-// forward from the last position instead of searching the line index each time (a 1 MB
-// file can be a single line).
+// Turns byte offsets into Spans. Requests come mostly in increasing order, so it keeps
+// the current line and column and moves forward from there: the line by stepping through
+// the file's line index, the column by counting code points since the last request on
+// that line. (A 1 MB file can be a single line; nothing here rescans it.)
 class SpanMaker {
  public:
   SpanMaker(const SourceFile& file, FileId id) : file_(file), id_(id), text_(file.view()) {
-    if (text_.size() >= 3 && text_.compare(0, 3, "\xEF\xBB\xBF") == 0) off_ = line_start_ = 3;
+    if (text_.size() >= 3 && text_.compare(0, 3, "\xEF\xBB\xBF") == 0) off_ = bom_ = 3;
   }
 
   Span span(std::size_t offset, std::size_t length) {
     if (offset > text_.size()) offset = text_.size();
-    if (offset < line_start_) return file_.span(id_, offset, length);
-    if (offset < off_) {
-      off_ = line_start_;
+    if (offset < off_ || offset < bom_) return file_.span(id_, offset, length);
+    const std::uint32_t lines = file_.line_count();
+    bool moved = false;
+    while (line_ < lines && file_.line_start(line_ + 1) <= offset) {
+      ++line_;
+      moved = true;
+    }
+    if (moved) {
+      off_ = file_.line_start(line_);
       col_ = 1;
     }
     const char* s = text_.data();
-    for (std::size_t i = off_; i < offset; ++i) {
-      const char c = s[i];
-      if (c == '\n' || (c == '\r' && (i + 1 == text_.size() || s[i + 1] != '\n'))) {
-        ++line_;
-        col_ = 1;
-        line_start_ = i + 1;
-      } else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) {
-        ++col_;
-      }
-    }
+    std::uint32_t col = col_;
+    for (std::size_t i = off_; i < offset; ++i) col += (static_cast<unsigned char>(s[i]) & 0xC0) != 0x80;
+    col_ = col;
     off_ = offset;
     return Span{id_, offset, length, line_, col_};
   }
@@ -78,10 +78,10 @@ class SpanMaker {
   const SourceFile& file_;
   FileId id_;
   std::string_view text_;
-  std::size_t off_ = 0;
-  std::size_t line_start_ = 0;
-  std::uint32_t line_ = 1;
-  std::uint32_t col_ = 1;
+  std::size_t bom_ = 0;
+  std::size_t off_ = 0;      // last offset asked for
+  std::uint32_t line_ = 1;   // its line
+  std::uint32_t col_ = 1;    // its column
 };
 
 std::string quote_for_message(std::string_view s) {
