@@ -258,3 +258,32 @@ TEST_CASE("usda lexer: token offsets and lengths", "[usda][lexer]") {
   CHECK(lex.next().kind == TokenKind::End);
   CHECK(kinds("").back() == TokenKind::End);
 }
+
+#include "formats/usda/array_scan.h"
+
+TEST_CASE("usda array scan: numeric array literals", "[usda][lexer]") {
+  auto scan = [](std::string_view t) { return scan_numeric_array(t, 0, 256); };
+  auto s = scan("[1, 2.5, -3e-2, inf, -inf, nan, .5] tail");
+  REQUIRE(s);
+  CHECK(s->count == 7);
+  CHECK(s->end == 35);
+  s = scan("[(0, 0, 0), (1, 2, 3),\n # comment ]\n (4, 5, 6) /* c */, // x\n]");
+  REQUIRE(s);
+  CHECK(s->count == 3);
+  CHECK(scan("[]")->count == 0);
+  CHECK(scan("[1, 2,]")->count == 2);  // trailing comma
+  CHECK(scan("[[1, 2], [3]]")->count == 2);
+  CHECK_FALSE(scan("[1 2]"));
+  CHECK_FALSE(scan("[1,, 2]"));
+  CHECK_FALSE(scan("[, 1]"));
+  CHECK_FALSE(scan("[(1, 2]"));
+  CHECK_FALSE(scan("[()]"));
+  CHECK_FALSE(scan("[1abc]"));
+  CHECK_FALSE(scan("[1e]"));
+  CHECK_FALSE(scan("[\"a\"]"));
+  CHECK_FALSE(scan("[infinity]"));
+  CHECK_FALSE(scan("[1, 2"));
+  CHECK_FALSE(scan("[1 /* open"));
+  CHECK_FALSE(scan_numeric_array("[[[[1]]]]", 0, 3));  // deeper than allowed
+  CHECK(scan_numeric_array("x [1]", 2, 256)->end == 5);
+}

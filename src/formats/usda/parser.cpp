@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "formats/usda/array_scan.h"
 #include "formats/usda/lexer.h"
 
 namespace assetlint::usda {
@@ -499,78 +500,19 @@ Value Parser::parse_sequence(TokenKind open, TokenKind close_kind, ValueKind kin
   return v;
 }
 
-// Skips over a list of numbers / nested tuples of numbers without building nodes,
-// counting its top-level items. Returns false (with the lexer rewound) if the list is
-// small or contains anything else; the caller then parses it normally, which also
-// produces the precise error for malformed input.
+// Skips over a large list of numbers / nested tuples of numbers without building nodes,
+// keeping only its span and item count. Returns false (nothing consumed) if the list is
+// small or is not a well-formed numeric list; the caller then parses it normally, which
+// also produces the precise error for malformed input.
 bool Parser::try_skip_numeric_list(Value& out) {
-  const Lexer saved_lex = lex_;
-  const Token saved_tok = tok_;
-  const std::size_t saved_prev = prev_end_;
-  const std::size_t start = tok_.offset;
-  std::array<TokenKind, 64> stack{};
-  std::size_t depth = 0;
-  std::size_t count = 0;
-  bool expect_value = true;
-  bool just_opened = false;
-  Token t = tok_;
-  bool ok = false;
-  for (;;) {
-    switch (t.kind) {
-      case TokenKind::LBracket:
-      case TokenKind::LParen:
-        if (!expect_value || depth == stack.size()) goto done;
-        if (depth == 1) ++count;
-        stack[depth++] = t.kind == TokenKind::LBracket ? TokenKind::RBracket : TokenKind::RParen;
-        just_opened = true;
-        break;
-      case TokenKind::RBracket:
-      case TokenKind::RParen:
-        if (depth == 0 || stack[depth - 1] != t.kind) goto done;
-        if (expect_value && just_opened && t.kind == TokenKind::RParen) goto done;  // empty tuple
-        --depth;
-        expect_value = false;
-        just_opened = false;
-        if (depth == 0) {
-          ok = true;
-          goto done;
-        }
-        break;
-      case TokenKind::Number:
-        if (!expect_value) goto done;
-        if (depth == 1) ++count;
-        expect_value = false;
-        just_opened = false;
-        break;
-      case TokenKind::Identifier: {
-        const std::string_view w = lex_.token_text(t);
-        if (!expect_value || (w != "inf" && w != "nan")) goto done;
-        if (depth == 1) ++count;
-        expect_value = false;
-        just_opened = false;
-        break;
-      }
-      case TokenKind::Comma:
-        if (expect_value) goto done;
-        expect_value = true;
-        just_opened = false;
-        break;
-      default: goto done;
-    }
-    t = lex_.next();
-  }
-done:
-  if (!ok || count <= options_.eager_array_limit) {
-    lex_ = saved_lex;
-    tok_ = saved_tok;
-    prev_end_ = saved_prev;
-    return false;
-  }
+  const auto scan = scan_numeric_array(text_, tok_.offset, options_.max_depth);
+  if (!scan || scan->count <= options_.eager_array_limit) return false;
   out.kind = ValueKind::List;
   out.lazy = true;
-  out.count = count;
-  out.span = spans_.span(start, t.end() - start);
-  prev_end_ = t.end();
+  out.count = scan->count;
+  out.span = spans_.span(tok_.offset, scan->end - tok_.offset);
+  prev_end_ = scan->end;
+  lex_.reset(scan->end);
   advance();
   return true;
 }
