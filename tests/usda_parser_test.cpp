@@ -742,3 +742,24 @@ TEST_CASE("usda parser: nesting depth is bounded", "[usda][parser]") {
   for (int i = 0; i < 100; ++i) ok_prims += "}\n";
   CHECK(parse(ok_prims).ok());
 }
+
+TEST_CASE("usda parser: malformed large arrays get the precise error", "[usda][parser]") {
+  std::string text = "#usda 1.0\ndef Mesh \"m\" {\n    int[] faceVertexIndices = [";
+  for (int i = 0; i < 30; ++i) text += std::to_string(i) + ", ";
+  text += "30 31]\n}\n";
+  const Parsed p = parse(text);
+  REQUIRE_FALSE(p.ok());
+  CHECK(p.error().message == "expected ',' or ']' in list, found number 31");
+  CHECK(p.error().span.line == 3);
+  CHECK(p.error().span.column == text.find("31]") - text.rfind('\n', text.find("31]")));
+
+  // comments inside a large array are fine and the array stays lazy
+  std::string commented = "#usda 1.0\ndef Mesh \"m\" {\n    float[] w = [ # weights\n";
+  for (int i = 0; i < 30; ++i) commented += "        " + std::to_string(i) + ", // item\n";
+  commented += "    ]\n    float after = 1\n}\n";
+  const Parsed c = must_parse(commented);
+  const Prim& m = only_root(c);
+  CHECK(m.find_attribute("w")->default_value->lazy);
+  CHECK(m.find_attribute("w")->default_value->count == 30);
+  CHECK(m.find_attribute("after")->default_value->span.line == 35);
+}

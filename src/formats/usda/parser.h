@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "formats/usda/ast.h"
+#include "formats/usda/literals.h"
 #include "model/source.h"
 
 namespace assetlint::usda {
@@ -60,12 +61,5 @@ std::optional<ParseError> materialize(Value& list, const SourceFile& file, FileI
 // ([(1, 2, 3), (4, 5, 6)] gives 1..6). Works on lazy lists without building nodes.
 // Returns false (and leaves `out` partly filled) if a non-number item is found.
 bool read_numbers(const Value& value, std::string_view text, std::vector<double>& out);
-
-// Decodes a string token's text (with its quotes) into its contents, resolving escapes.
-std::string decode_string(std::string_view token_text);
-// Decodes an asset path token's text (@...@ or @@@...@@@).
-std::string decode_asset_path(std::string_view token_text);
-// Parses a number token's text (also "inf", "-inf", "nan", "+1").
-double parse_number(std::string_view token_text);
 
 }  // namespace assetlint::usda
