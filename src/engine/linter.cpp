@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "config/drive_overrides.h"
 #include "engine/rule.h"
 #include "formats/urdf/urdf_reader.h"
 #include "rules/registry.h"
@@ -58,6 +59,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   for (auto& d : result.diagnostics)
     if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
   if (result.usable) {
+    config::apply_drive_settings(result.asset, settings);
     for (const Rule* rule : rules::checks()) {
       if (!settings.selection.enabled(rule->info().id)) continue;
       Reporter reporter(rule->info(), diagnostics);
