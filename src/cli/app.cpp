@@ -8,6 +8,7 @@
 
 #include "cli/rule_docs.h"
 #include "engine/linter.h"
+#include "fix/command.h"
 #include "report/json_reporter.h"
 #include "report/summary.h"
 #include "report/text_reporter.h"
@@ -87,6 +88,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   std::string format = "text";
   std::string color = "auto";
   bool show_rules = false, show_version = false;
+  bool fix = false, unsafe_fixes = false, diff = false;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   app.add_option("paths", paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
   app.add_option("--select", select, "Only these rules (comma list, globs such as 'mimic-*')")
@@ -96,11 +98,15 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   app.add_option("--output-format", format, "Output format")->check(CLI::IsMember({"text", "json"}));
   app.add_option("--color", color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
   app.add_option("-j,--jobs", jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
+  app.add_flag("--fix", fix, "Apply the safe fixes in place, then report what remains");
+  app.add_flag("--unsafe-fixes", unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
+  app.add_flag("--diff", diff, "Print a unified diff of what --fix would change; write nothing");
   app.add_flag("--list-rules", show_rules, "List every rule and exit");
   app.add_flag("--version", show_version, "Print the version and exit");
   app.footer(
       "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
-      "Exit status: 0 nothing reported, 1 findings remain, 2 usage, configuration or I/O error.");
+      "Exit status: 0 nothing reported, 1 findings remain, 2 usage, configuration or I/O error.\n"
+      "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());
   try {
@@ -130,6 +136,19 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   settings.selection.select = select;
   settings.selection.ignore = ignore;
 
+  const bool use_color = color == "always" || (color == "auto" && out_is_terminal && !std::getenv("NO_COLOR"));
+  auto write_report = [&](const std::vector<FileReport>& reports) {
+    if (format == "json") write_json(out, reports);
+    else write_text(out, reports, TextOptions{use_color, true});
+  };
+  if (fix || diff) {
+    fix::FixCommandOptions fix_options;
+    fix_options.diff = diff;
+    fix_options.unsafe = unsafe_fixes;
+    fix_options.jobs = jobs;
+    return fix::run_fix_command(paths, settings, fix_options, out, err, write_report);
+  }
+
   PathExpansion expansion = expand_paths(paths);
   bool io_error = false;
   for (const auto& message : expansion.errors) {
@@ -144,12 +163,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
     return true;
   });
 
-  if (format == "json") {
-    write_json(out, reports);
-  } else {
-    const bool use_color = color == "always" || (color == "auto" && out_is_terminal && !std::getenv("NO_COLOR"));
-    write_text(out, reports, TextOptions{use_color, true});
-  }
+  write_report(reports);
   if (io_error) return kExitError;
   return summarize(reports).total() == 0 ? kExitClean : kExitFindings;
 }

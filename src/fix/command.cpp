@@ -27,7 +27,8 @@ std::string problems(std::size_t n) { return fmt::format("{} problem{}", n, n ==
 
 std::string diff_label(const char* prefix, const std::string& path) {
   std::string p = path;
-  while (p.starts_with("./")) p.erase(0, 2);
+  // Like git: "./x" and "/abs/x" become "a/x" and "a/abs/x".
+  while (p.starts_with("./") || p.starts_with("/")) p.erase(0, p.starts_with("/") ? 1 : 2);
   return prefix + p;
 }
 

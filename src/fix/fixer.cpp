@@ -79,6 +79,7 @@ class Fixer {
     FixResult result;
     result.path = path_;
     result.initial = lint_file(path_, settings_, base_);
+    if (options_.on_report && !result.initial.error) options_.on_report(result.initial);
     result.remaining = result.initial;
     if (result.initial.error) {
       result.error = result.initial.error;
@@ -145,6 +146,7 @@ class Fixer {
       baseline = std::move(after_findings);
 
       current = lint_file(path_, settings_, overlay_);
+      if (options_.on_report && !current.error) options_.on_report(current);
       if (current.error) {
         result.error = fmt::format("cannot re-read {} after fixing: {}", path_, *current.error);
         result.files.clear();

@@ -35,6 +35,9 @@ struct FixOptions {
   bool unsafe = false;    // also apply Applicability::Unsafe fixes
   int max_rounds = 10;    // lint-and-apply rounds before giving up (no convergence)
   EditScope scope;        // empty: default_scope(path)
+  // Called with each round's lint before its fixes are collected. For tests and
+  // tools: it may add or change diagnostics and fixes (edits on the report's texts).
+  std::function<void(FileReport&)> on_report;
 };
 
 // One fix the fixer applied, with its edits resolved to paths.
