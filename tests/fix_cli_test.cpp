@@ -156,6 +156,16 @@ TEST_CASE("cli: --fix over a directory rewrites only the files it changes", "[fi
   CHECK(read_file(b) == b_once);
 }
 
+TEST_CASE("cli: a file named twice is fixed once", "[fix][cli]") {
+  TempDir dir;
+  const fs::path file = copy_case(dir.path(), "limits-inverted", "lower_above_upper.urdf", "assets/a.urdf");
+  auto r = run_cli({"--fix", "--unsafe-fixes", "assets/a.urdf", "assets", "./assets/a.urdf"}, dir.path());
+  CHECK(r.exit_code == 0);
+  CHECK(r.err == "asset-lint: fixed 1 problem in assets/a.urdf\n");
+  CHECK(r.out == "No problems found in 1 file.\n");
+  CHECK(read_file(file) == read_file(fixture("limits-inverted", "lower_above_upper.urdf.fixed")));
+}
+
 TEST_CASE("cli: --fix with JSON output reports what remains", "[fix][cli]") {
   TempDir dir;
   copy_case(dir.path(), "units-angle-degrees", "guide_upper_47.urdf", "robot.urdf");

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <filesystem>
+#include <set>
 #include <thread>
 
 #include "fix/diff.h"
@@ -41,6 +43,7 @@ int run_fix_command(const std::vector<std::string>& paths, const Settings& setti
   // Each file may be edited within the tree it was found in: a directory argument's
   // tree, or a file argument's own directory.
   std::vector<Target> targets;
+  std::set<std::string> seen;
   for (const auto& argument : paths) {
     PathExpansion expansion = expand_paths({argument});
     for (const auto& message : expansion.errors) {
@@ -48,6 +51,10 @@ int run_fix_command(const std::vector<std::string>& paths, const Settings& setti
       failed = true;
     }
     for (auto& file : expansion.files) {
+      // A file named twice (`a.urdf a.urdf`, `dir dir/a.urdf`) is fixed once.
+      std::error_code ec;
+      const auto canonical = std::filesystem::weakly_canonical(file, ec);
+      if (!seen.insert(ec ? file : canonical.string()).second) continue;
       EditScope scope = file == argument ? default_scope(file) : tree_scope(argument);
       targets.push_back({std::move(file), std::move(scope)});
     }

@@ -35,6 +35,18 @@ bool is_under(const fs::path& path, const fs::path& dir) {
   return true;
 }
 
+// Fixes are applied in stages: first those that correct what a value means (its unit),
+// then its order (lower/upper), then fixes that reason about values, often of another
+// joint (a mimic joint's limits from the range of the joint it follows). A round applies
+// only the earliest stage that has fixes: fixes are computed from the lint of the
+// round's text, so a fix of a later stage applied beside one that changes a value it
+// read would write a stale result, which the next round could misread again.
+int fix_stage(std::string_view rule) {
+  if (rule.starts_with("units-")) return 0;
+  if (rule.starts_with("limits-")) return 1;
+  return 2;
+}
+
 // A candidate fix of one round: the diagnostic's fix, with its edits' paths.
 struct Candidate {
   const Diagnostic* diagnostic = nullptr;
@@ -87,7 +99,8 @@ class Fixer {
     }
     FileReport current = result.initial;
     remember_originals(current);
-    auto baseline = reader_findings(lint_file(path_, reader_settings_, base_));
+    // Every later lint reads this snapshot, never the disk again.
+    auto baseline = reader_findings(lint_file(path_, reader_settings_, overlay_));
     std::map<std::string, std::size_t> fixes_per_path;
 
     for (;;) {
@@ -168,8 +181,10 @@ class Fixer {
   void remember_originals(const FileReport& report) {
     for (const auto& source : report.sources) {
       if (originals_.count(source->path())) continue;
-      // A source first seen in a later round was read from `base_` unless the overlay has it.
+      // First seen: these are the bytes on disk (the overlay only holds sources already
+      // seen). Pin them, so that every round and the final write check see the same bytes.
       originals_.emplace(source->path(), source->text());
+      overlay_.set(source->path(), source->text());
     }
   }
 
@@ -219,6 +234,9 @@ class Fixer {
       }
       out.push_back(std::move(c));
     }
+    int earliest = 2;
+    for (const Candidate& c : out) earliest = std::min(earliest, fix_stage(c.diagnostic->rule));
+    std::erase_if(out, [&](const Candidate& c) { return fix_stage(c.diagnostic->rule) != earliest; });
     std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
       return std::tie(a.first_file, a.first_offset, a.diagnostic->rule, a.diagnostic->fix->title) <
              std::tie(b.first_file, b.first_offset, b.diagnostic->rule, b.diagnostic->fix->title);
