@@ -24,13 +24,16 @@ class InertiaInvalid final : public Rule {
     for (const RigidBody& body : moving_bodies(asset)) {
       if (body.links.empty()) continue;  // undefined child: structure-undefined-link reports it
       const Link& child = *body.links.front();
-      bool any_inertial = false;
+      bool any_inertial = false, any_negative = false;
       double total_mass = 0.0;
       for (const Link* link : body.links) {
         if (!link->inertial) continue;
         any_inertial = true;
-        if (link->inertial->mass_authored && link->inertial->mass.value > 0) total_mass += link->inertial->mass.value;
+        if (!link->inertial->mass_authored) continue;
+        if (link->inertial->mass.value > 0) total_mass += link->inertial->mass.value;
+        any_negative = any_negative || link->inertial->mass.value < 0;
       }
+      if (any_negative) continue;  // reported below, once, as a negative mass
       if (!any_inertial && urdf) {
         out.report(child.name.span,
                    fmt::format("link '{}' moves (child of {}) but has no <inertial>: the simulator has to invent its "

@@ -91,6 +91,9 @@ struct Joint {
   OptQuantity joint_friction;
   OptQuantity armature;    // kg·m² or kg
   std::optional<Drive> drive;
+  // Values of a drive schema that is authored but not applied (USD `delete apiSchemas`):
+  // PhysX ignores them, but they show what someone meant, e.g. gains copied elsewhere.
+  std::optional<Drive> inactive_drive;
   std::optional<Mimic> mimic;
 
   bool is_mimic() const { return mimic.has_value(); }

@@ -320,12 +320,23 @@ class UrdfReader {
     std::vector<std::string_view> names;
     for (std::size_t pos = 0; pos < message.size(); ++pos) {
       const char open = message[pos];
-      const char close = open == '[' ? ']' : (open == '\'' || open == '"') ? open : '\0';
+      const char close = open == '[' ? ']' : open == '(' ? ')' : (open == '\'' || open == '"') ? open : '\0';
       if (!close) continue;
       const auto end = message.find(close, pos + 1);
       if (end == std::string_view::npos) break;
       names.push_back(message.substr(pos + 1, end - pos - 1));
       pos = end;
+    }
+    // "link 'x' is not unique": point at the repeated definition, not the first.
+    if (message.find("not unique") != std::string_view::npos) {
+      for (auto name : names) {
+        const Span* last = nullptr;
+        for (const auto& joint : result_.asset.joints)
+          if (joint.name.text == name) last = &joint.name.span;
+        for (const auto& link : result_.asset.links)
+          if (link.name.text == name && (!last || link.name.span.offset > last->offset)) last = &link.name.span;
+        if (last) return *last;
+      }
     }
     for (auto name : names)
       if (const Joint* j = result_.asset.find_joint(name)) return j->name.span;
