@@ -12,4 +12,19 @@ const RuleInfo kUrdfInvalid{
     "urdfdom (and so ROS, check_urdf and simulator importers) rejects the model",
     Severity::Error, false, RuleOrigin::Reader, {}};
 
+const RuleInfo kLayerUnresolved{
+    "layer-unresolved",
+    "A USD layer or reference is missing, binary, outside the checked tree, or cyclic: its opinions are skipped",
+    Severity::Info, false, RuleOrigin::Reader, {}};
+
+const RuleInfo kStaleSchemaAttribute{
+    "stale-schema-attribute",
+    "Attributes authored for a USD API schema that is not applied (or was deleted): PhysX ignores them",
+    Severity::Info, false, RuleOrigin::Reader, {}};
+
+const RuleInfo kMimicAxisInstance{
+    "mimic-axis-instance",
+    "PhysxMimicJointAPI applied with an instance other than rotX/rotY/rotZ: PhysX silently ignores the mimic",
+    Severity::Warning, false, RuleOrigin::Reader, {}};
+
 }  // namespace assetlint::rules

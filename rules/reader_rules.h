@@ -7,5 +7,8 @@ namespace assetlint::rules {
 
 extern const RuleInfo kParseError;
 extern const RuleInfo kUrdfInvalid;
+extern const RuleInfo kLayerUnresolved;
+extern const RuleInfo kStaleSchemaAttribute;
+extern const RuleInfo kMimicAxisInstance;
 
 }  // namespace assetlint::rules

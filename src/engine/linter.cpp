@@ -10,6 +10,7 @@
 #include "config/drive_overrides.h"
 #include "engine/rule.h"
 #include "formats/urdf/urdf_reader.h"
+#include "formats/usda/usd_reader.h"
 #include "rules/registry.h"
 
 namespace assetlint {
@@ -21,9 +22,10 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
-ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem&) {
+ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem& files) {
   switch (file_kind(path)) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
+    case FileKind::Usda: return usda::read_usda(std::move(file), files);
     default: break;
   }
   ReadResult unsupported;
@@ -43,6 +45,7 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 FileKind file_kind(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == ".urdf") return FileKind::Urdf;
+  if (ext == ".usda") return FileKind::Usda;
   return FileKind::Unsupported;
 }
 
@@ -50,7 +53,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   FileReport report;
   report.path = path;
   if (file_kind(path) == FileKind::Unsupported) {
-    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf files)", extension_of(path));
+    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf and .usda files)", extension_of(path));
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));

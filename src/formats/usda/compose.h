@@ -1,0 +1,103 @@
+#pragma once
+// Composition of a .usda layer with the local layers it names: `subLayers` (the layer
+// stack, strongest first), `references` and `payload` arcs (to other .usda files, or
+// internal `</Prim>` references), merging prim specs by path. The strongest opinion wins
+// per attribute; `apiSchemas` list-ops compose across all specs.
+//
+//   Stage stage = compose_stage(root_file, files, {});
+//   if (!stage.usable) ...;                  // a layer did not parse (parse-error reported)
+//   const ComposedPrim* p = stage.find("/robot/joints/J0");
+//   auto stiffness = p->attribute("drive:angular:physics:stiffness");
+//
+// Every layer read becomes a SourceFile (Stage::sources, FileId = index, [0] the root), so
+// spans of the AST nodes a ComposedPrim hands out point into the layer that authored them.
+// Layers that are missing, binary, or outside the allowed directory tree are skipped with
+// a `layer-unresolved` note at the asset path; cycles are reported (warning) and cut.
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "engine/diagnostic.h"
+#include "engine/file_system.h"
+#include "formats/usda/ast.h"
+#include "model/source.h"
+
+namespace assetlint::usda {
+
+struct ComposeOptions {
+  // Layers outside this directory tree are not read. Empty: the root layer's directory.
+  std::string root_dir;
+  bool allow_outside_root = false;
+};
+
+// One prim spec that contributes opinions to a composed prim.
+struct SpecRef {
+  FileId file = kNoFile;
+  const Prim* prim = nullptr;
+  FileId stack = kNoFile;  // the layer whose layer stack holds the spec (internal references resolve there)
+  // Paths authored in the spec under `source_root` map to `target_root` on the stage
+  // (a referenced prim's relationship targets). Both empty: identity.
+  std::string source_root;
+  std::string target_root;
+};
+
+struct AttributeOpinion {
+  const Attribute* attribute = nullptr;
+  FileId file = kNoFile;
+};
+
+struct RelationshipOpinion {
+  const Relationship* relationship = nullptr;
+  FileId file = kNoFile;
+  std::vector<std::string> targets;       // mapped into stage namespace
+  std::vector<const Value*> target_values;  // the authored path literals (for spans)
+};
+
+struct ComposedPrim {
+  std::string path;  // "/robot/joints/J0"
+  std::string name;
+  std::string type_name;  // strongest authored type name
+  bool defined = false;   // some spec is a `def` (only-`over` prims are not on the stage)
+  std::vector<SpecRef> specs;             // strongest first
+  std::vector<std::string> api_schemas;   // composed applied schemas, in order
+  std::vector<std::string> deleted_api_schemas;  // removed by a `delete` list-op and not re-added
+  std::vector<std::size_t> children;      // indices into Stage::prims
+  std::size_t parent = static_cast<std::size_t>(-1);
+
+  // The strongest spec that gives the attribute a value (`= None` blocks weaker ones).
+  std::optional<AttributeOpinion> attribute(std::string_view name) const;
+  std::optional<RelationshipOpinion> relationship(std::string_view name) const;
+  bool has_api_schema(std::string_view schema) const;
+  bool schema_deleted(std::string_view schema) const;
+  // The strongest opinion of every attribute authored on the prim with a value, ordered
+  // by (file, offset) of the winning declaration.
+  std::vector<AttributeOpinion> attributes() const;
+  // Where a schema is applied: the string literal in the strongest `apiSchemas` entry
+  // that adds it; the prim's name when none is found.
+  Span schema_span(std::string_view schema) const;
+  // The span of the strongest spec's prim name (quoted).
+  Span span() const;
+};
+
+struct Stage {
+  std::vector<std::shared_ptr<const SourceFile>> sources;  // by FileId; [0] the root layer
+  std::vector<std::unique_ptr<Layer>> layers;              // by FileId; null when not parsed
+  std::vector<FileId> root_stack;                          // the root layer stack, strongest first
+  std::vector<ComposedPrim> prims;                         // depth-first, parents before children
+  std::vector<std::size_t> roots;                          // root prims, in order
+  std::vector<Diagnostic> diagnostics;                     // parse-error, layer-unresolved
+  bool usable = true;                                      // false: a layer has a syntax error
+
+  const ComposedPrim* find(std::string_view path) const;
+  const Layer* root_layer() const { return layers.empty() ? nullptr : layers[0].get(); }
+
+  std::unordered_map<std::string, std::size_t> index;  // path -> prims index
+};
+
+// Reads `root` and every local layer it composes, through `files`.
+Stage compose_stage(std::shared_ptr<const SourceFile> root, const FileSystem& files, const ComposeOptions& options = {});
+
+}  // namespace assetlint::usda

@@ -1,0 +1,390 @@
+#include "formats/usda/usd_reader.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <map>
+#include <unordered_set>
+
+#include "rules/reader_rules.h"
+
+namespace assetlint::usda {
+namespace {
+
+constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+bool is_rot_instance(std::string_view inst) { return inst == "rotX" || inst == "rotY" || inst == "rotZ"; }
+
+// The schema whose namespace an attribute belongs to (only the physics schemas the
+// model reads); empty for anything else.
+std::string schema_of(std::string_view name) {
+  auto instance_after = [&](std::string_view prefix) -> std::string_view {
+    if (!name.starts_with(prefix)) return {};
+    const std::string_view rest = name.substr(prefix.size());
+    const auto colon = rest.find(':');
+    return colon == std::string_view::npos || colon == 0 ? std::string_view() : rest.substr(0, colon);
+  };
+  if (auto inst = instance_after("drive:"); !inst.empty() && name.substr(6 + inst.size()).starts_with(":physics:"))
+    return "PhysicsDriveAPI:" + std::string(inst);
+  if (auto inst = instance_after("physxMimicJoint:"); !inst.empty()) return "PhysxMimicJointAPI:" + std::string(inst);
+  if (auto inst = instance_after("physxJointAxis:"); !inst.empty()) return "PhysxJointAxisAPI:" + std::string(inst);
+  if (name.starts_with("physxJoint:")) return "PhysxJointAPI";
+  if (name.starts_with("physxArticulation:")) return "PhysxArticulationAPI";
+  if (name.starts_with("physxScene:")) return "PhysxSceneAPI";
+  if (name == "physics:mass" || name == "physics:diagonalInertia" || name == "physics:principalAxes" ||
+      name == "physics:centerOfMass" || name == "physics:density")
+    return "PhysicsMassAPI";
+  return {};
+}
+
+std::optional<JointType> joint_type(std::string_view type) {
+  if (type == "PhysicsRevoluteJoint") return JointType::Revolute;
+  if (type == "PhysicsPrismaticJoint") return JointType::Prismatic;
+  if (type == "PhysicsFixedJoint") return JointType::Fixed;
+  if (type == "PhysicsSphericalJoint") return JointType::Spherical;
+  if (type == "PhysicsJoint") return JointType::Generic;
+  return std::nullopt;
+}
+
+Eigen::Quaterniond quaternion(const std::vector<double>& v) {
+  // USD writes quaternions real part first: (w, x, y, z).
+  Eigen::Quaterniond q(v[0], v[1], v[2], v[3]);
+  if (!(q.norm() > 1e-12) || !std::isfinite(q.norm())) return Eigen::Quaterniond::Identity();
+  return q.normalized();
+}
+
+class Reader {
+ public:
+  explicit Reader(Stage stage) : stage_(std::move(stage)) {}
+
+  ReadResult run() {
+    result_.asset.format = SourceFormat::Usda;
+    result_.asset.sources = stage_.sources;
+    result_.diagnostics = std::move(stage_.diagnostics);
+    if (!stage_.usable || !stage_.root_layer()) {
+      result_.usable = false;
+      return std::move(result_);
+    }
+    const Layer& root = *stage_.root_layer();
+    mpu_ = root.meters_per_unit().value_or(0.01);
+    kpu_ = root.kilograms_per_unit().value_or(1.0);
+    if (!(mpu_ > 0) || !std::isfinite(mpu_)) mpu_ = 0.01;
+    if (!(kpu_ > 0) || !std::isfinite(kpu_)) kpu_ = 1.0;
+    read_robot_name(root);
+
+    std::vector<bool> on_stage(stage_.prims.size(), false);
+    for (std::size_t i = 0; i < stage_.prims.size(); ++i) {
+      const ComposedPrim& prim = stage_.prims[i];
+      const bool parent_ok = prim.parent == kNone || on_stage[prim.parent];
+      on_stage[i] = parent_ok && prim.defined && is_active(prim);
+      if (!on_stage[i]) continue;
+      check_stale(prim);
+      if (prim.has_api_schema("PhysicsRigidBodyAPI")) read_link(prim);
+      if (auto type = joint_type(prim.type_name)) read_joint(prim, *type);
+      if (prim.type_name == "PhysicsScene") read_scene(prim);
+      if (prim.has_api_schema("PhysxArticulationAPI") && !result_.asset.scene.position_iterations)
+        result_.asset.scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
+    }
+    return std::move(result_);
+  }
+
+ private:
+  static bool is_active(const ComposedPrim& prim) {
+    for (const SpecRef& s : prim.specs)
+      if (const Metadata* m = s.prim->find_metadata("active")) return m->value.as_bool().value_or(true);
+    return true;
+  }
+
+  void read_robot_name(const Layer& root) {
+    if (const Metadata* m = root.find_metadata("defaultPrim")) {
+      if (auto name = m->value.as_string()) {
+        result_.asset.robot_name = Name{std::string(*name), m->value.span};
+        const ComposedPrim* prim = stage_.find("/" + std::string(*name));
+        result_.asset.robot_span = prim ? prim->span() : m->value.span;
+        return;
+      }
+    }
+    for (std::size_t index : stage_.roots) {
+      const ComposedPrim& prim = stage_.prims[index];
+      if (!prim.defined) continue;
+      result_.asset.robot_name = Name{prim.name, prim.span()};
+      result_.asset.robot_span = prim.span();
+      return;
+    }
+  }
+
+  void report(const RuleInfo& rule, const Span& span, std::string message) {
+    result_.diagnostics.push_back({std::string(rule.id), rule.default_severity, span, std::move(message), std::nullopt});
+  }
+
+  // The declaration widened to whole lines when it stands alone on them, so that
+  // removing it leaves no blank line behind.
+  Span declaration_span(FileId file, const Span& decl) const {
+    const SourceFile& src = *stage_.sources[file];
+    const std::string_view text = src.view();
+    std::size_t begin = decl.offset, end = decl.end();
+    while (begin > 0 && (text[begin - 1] == ' ' || text[begin - 1] == '\t')) --begin;
+    if (begin > 0 && text[begin - 1] != '\n') return decl;
+    std::size_t after = end;
+    while (after < text.size() && (text[after] == ' ' || text[after] == '\t')) ++after;
+    if (after < text.size() && text[after] == '\r') ++after;
+    if (after < text.size() && text[after] != '\n') return decl;
+    if (after < text.size()) ++after;
+    return src.span(file, begin, after - begin);
+  }
+
+  OptQuantity number(const ComposedPrim& prim, std::string_view name, Unit unit, double scale = 1.0) {
+    auto opinion = prim.attribute(name);
+    if (!opinion) return std::nullopt;
+    const Value& v = *opinion->attribute->default_value;
+    auto d = v.as_double();
+    if (!d) return std::nullopt;
+    Quantity q = Quantity::from_authored(*d, unit, v.span, scale);
+    q.declaration = declaration_span(opinion->file, opinion->attribute->default_declaration_span);
+    return q;
+  }
+
+  std::optional<std::vector<double>> numbers(const ComposedPrim& prim, std::string_view name, std::size_t count,
+                                             Span* span = nullptr) {
+    auto opinion = prim.attribute(name);
+    if (!opinion) return std::nullopt;
+    auto v = opinion->attribute->default_value->as_numbers();
+    if (!v || v->size() != count) return std::nullopt;
+    if (span) *span = opinion->attribute->default_value->span;
+    return v;
+  }
+
+  // Attributes authored for schemas the prim does not apply: one note per schema.
+  void check_stale(const ComposedPrim& prim) {
+    std::map<std::string, std::vector<AttributeOpinion>> by_schema;
+    std::vector<std::string> order;
+    for (const AttributeOpinion& a : prim.attributes()) {
+      std::string schema = schema_of(a.attribute->name);
+      if (schema.empty() || prim.has_api_schema(schema)) continue;
+      auto& list = by_schema[schema];
+      if (list.empty()) order.push_back(schema);
+      list.push_back(a);
+    }
+    for (const std::string& schema : order) {
+      const auto& attrs = by_schema[schema];
+      std::string names;
+      for (const AttributeOpinion& a : attrs) names += (names.empty() ? "'" : ", '") + a.attribute->name + "'";
+      const bool deleted = prim.schema_deleted(schema);
+      report(rules::kStaleSchemaAttribute, attrs.front().attribute->name_span,
+             fmt::format("{} {} authored on '{}' but {} {}: PhysX ignores {}", names,
+                         attrs.size() == 1 ? "is" : "are", prim.path, schema,
+                         deleted ? "is removed by `delete apiSchemas`" : "is not applied",
+                         attrs.size() == 1 ? "it" : "them"));
+    }
+  }
+
+  void read_link(const ComposedPrim& prim) {
+    Link link;
+    link.name = Name{prim.path, prim.span()};
+    link.span = prim.span();
+    if (prim.has_api_schema("PhysicsMassAPI")) {
+      Inertial in;
+      in.span = prim.schema_span("PhysicsMassAPI");
+      const double inertia_scale = kpu_ * mpu_ * mpu_;
+      if (auto mass = number(prim, "physics:mass", Unit::Kilogram, kpu_)) {
+        in.mass = *mass;
+        in.mass_authored = mass->authored != 0.0;
+      } else {
+        in.mass = Quantity::unauthored(0.0, Unit::Kilogram);
+        in.mass.span = in.span;
+        in.mass_authored = false;
+      }
+      Span diag_span = in.span;
+      auto diag = numbers(prim, "physics:diagonalInertia", 3, &diag_span);
+      in.inertia_span = diag_span;
+      in.inertia_authored = diag && ((*diag)[0] != 0 || (*diag)[1] != 0 || (*diag)[2] != 0);
+      if (in.inertia_authored) {
+        Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+        if (auto axes = numbers(prim, "physics:principalAxes", 4)) rotation = quaternion(*axes).toRotationMatrix();
+        const Eigen::Vector3d d((*diag)[0], (*diag)[1], (*diag)[2]);
+        in.inertia = rotation * d.asDiagonal() * rotation.transpose() * inertia_scale;
+      }
+      Span com_span = in.span;
+      if (auto com = numbers(prim, "physics:centerOfMass", 3, &com_span);
+          com && std::isfinite((*com)[0]) && std::isfinite((*com)[1]) && std::isfinite((*com)[2])) {
+        in.com = Eigen::Vector3d((*com)[0], (*com)[1], (*com)[2]) * mpu_;
+        in.com_span = com_span;
+      } else {
+        in.com_span = in.span;  // (-inf, -inf, -inf) or unauthored: PhysX computes it; the origin stands in
+      }
+      link.inertial = in;
+    }
+    result_.asset.links.push_back(std::move(link));
+  }
+
+  Name body(const ComposedPrim& prim, std::string_view rel, const Span& fallback) {
+    auto opinion = prim.relationship(rel);
+    if (!opinion || opinion->targets.empty()) return Name{std::string(), fallback};
+    return Name{opinion->targets.front(), opinion->target_values.front()->span};
+  }
+
+  void read_joint(const ComposedPrim& prim, JointType type) {
+    Joint joint;
+    joint.type = type;
+    joint.name = Name{prim.path, prim.span()};
+    joint.span = prim.span();
+    joint.type_span = joint.span;
+    for (const SpecRef& s : prim.specs)
+      if (s.prim->type_name == prim.type_name) {
+        joint.type_span = s.prim->type_span;
+        break;
+      }
+    joint.parent = body(prim, "physics:body0", joint.span);
+    joint.child = body(prim, "physics:body1", joint.span);
+    for (int i = 0; i < 2; ++i) {
+      Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+      if (auto pos = numbers(prim, i == 0 ? "physics:localPos0" : "physics:localPos1", 3))
+        frame.translation() = Eigen::Vector3d((*pos)[0], (*pos)[1], (*pos)[2]) * mpu_;
+      if (auto rot = numbers(prim, i == 0 ? "physics:localRot0" : "physics:localRot1", 4))
+        frame.linear() = quaternion(*rot).toRotationMatrix();
+      joint.frame_in_link[i] = frame;
+    }
+    char axis = 'X';
+    joint.axis_span = joint.span;
+    if (auto opinion = prim.attribute("physics:axis")) {
+      if (auto token = opinion->attribute->default_value->as_string(); token && token->size() == 1) {
+        axis = (*token)[0];
+        joint.axis_span = opinion->attribute->default_value->span;
+      }
+    }
+    joint.axis = axis == 'Y' ? Eigen::Vector3d::UnitY() : axis == 'Z' ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+
+    const bool prismatic = type == JointType::Prismatic;
+    const bool single = type == JointType::Revolute || prismatic;
+    joint.limit_span = joint.span;
+    if (single) {
+      auto limit = [&](std::string_view name) -> OptQuantity {
+        auto q = prismatic ? number(prim, name, Unit::Meter, mpu_) : number(prim, name, Unit::Degree);
+        if (q && std::isinf(q->authored)) return std::nullopt;  // ±inf: free
+        return q;
+      };
+      joint.lower = limit("physics:lowerLimit");
+      joint.upper = limit("physics:upperLimit");
+    }
+
+    // Degrees of freedom the drive and per-axis schemas may name, in preference order.
+    std::vector<std::string> instances;
+    const char axes[] = {'X', 'Y', 'Z'};
+    if (type == JointType::Revolute) instances = {"angular", std::string("rot") + axis};
+    else if (prismatic) instances = {"linear", std::string("trans") + axis};
+    else if (type == JointType::Generic || type == JointType::Spherical)
+      for (const char* kind : {"rot", "trans"})
+        for (char a : axes) instances.push_back(kind + std::string(1, a));
+    auto angular_instance = [&](const std::string& inst) { return inst == "angular" || inst.starts_with("rot"); };
+
+    const double torque_scale = kpu_ * mpu_ * mpu_;  // stage mass·length² → kg·m²
+    for (const std::string& inst : instances) {
+      if (!prim.has_api_schema("PhysicsDriveAPI:" + inst)) continue;
+      const bool angular = angular_instance(inst);
+      const std::string ns = "drive:" + inst + ":physics:";
+      Drive drive;
+      drive.instance = inst;
+      drive.span = prim.schema_span("PhysicsDriveAPI:" + inst);
+      drive.type_span = drive.span;
+      drive.stiffness = angular ? number(prim, ns + "stiffness", Unit::NewtonMeterPerDegree, torque_scale)
+                                : number(prim, ns + "stiffness", Unit::NewtonPerMeter, kpu_);
+      drive.damping = angular ? number(prim, ns + "damping", Unit::NewtonMeterSecondPerDegree, torque_scale)
+                              : number(prim, ns + "damping", Unit::NewtonSecondPerMeter, kpu_);
+      drive.max_force = angular ? number(prim, ns + "maxForce", Unit::NewtonMeter, torque_scale)
+                                : number(prim, ns + "maxForce", Unit::Newton, kpu_ * mpu_);
+      if (auto opinion = prim.attribute(ns + "type")) {
+        if (auto token = opinion->attribute->default_value->as_string()) {
+          drive.type = *token == "acceleration" ? DriveType::Acceleration : DriveType::Force;
+          drive.type_span = opinion->attribute->default_value->span;
+        }
+      }
+      joint.drive = std::move(drive);
+      break;
+    }
+
+    const bool angular_joint = !prismatic;
+    if (prim.has_api_schema("PhysxJointAPI")) {
+      joint.velocity = angular_joint ? number(prim, "physxJoint:maxJointVelocity", Unit::DegreePerSecond)
+                                     : number(prim, "physxJoint:maxJointVelocity", Unit::MeterPerSecond, mpu_);
+      joint.armature = angular_joint ? number(prim, "physxJoint:armature", Unit::KilogramMeter2, torque_scale)
+                                     : number(prim, "physxJoint:armature", Unit::Kilogram, kpu_);
+      joint.joint_friction = number(prim, "physxJoint:jointFriction", Unit::None);
+    }
+    for (const std::string& inst : instances) {
+      if (!prim.has_api_schema("PhysxJointAxisAPI:" + inst)) continue;
+      const std::string ns = "physxJointAxis:" + inst + ":";
+      const bool angular = angular_instance(inst);
+      if (auto v = angular ? number(prim, ns + "maxJointVelocity", Unit::DegreePerSecond)
+                           : number(prim, ns + "maxJointVelocity", Unit::MeterPerSecond, mpu_))
+        joint.velocity = v;
+      if (auto a = angular ? number(prim, ns + "armature", Unit::KilogramMeter2, torque_scale)
+                           : number(prim, ns + "armature", Unit::Kilogram, kpu_))
+        joint.armature = a;
+      break;
+    }
+
+    read_mimic(prim, joint);
+    result_.asset.joints.push_back(std::move(joint));
+  }
+
+  void read_mimic(const ComposedPrim& prim, Joint& joint) {
+    constexpr std::string_view kPrefix = "PhysxMimicJointAPI:";
+    for (const std::string& schema : prim.api_schemas) {
+      if (!std::string_view(schema).starts_with(kPrefix)) continue;
+      const std::string inst = schema.substr(kPrefix.size());
+      const Span span = prim.schema_span(schema);
+      if (!is_rot_instance(inst)) {
+        report(rules::kMimicAxisInstance, span,
+               fmt::format("'{}' on '{}': the mimic joint instance must be rotX, rotY or rotZ; PhysX silently ignores "
+                           "'{}', so this joint is not coupled",
+                           schema, prim.path, inst));
+        continue;
+      }
+      if (joint.mimic) continue;
+      const std::string ns = "physxMimicJoint:" + inst + ":";
+      const bool prismatic = joint.type == JointType::Prismatic;
+      Mimic mimic;
+      mimic.span = span;
+      mimic.instance = inst;
+      mimic.reference = body(prim, ns + "referenceJoint", span);
+      auto gearing = number(prim, ns + "gearing", Unit::UsdGearing);
+      mimic.multiplier = gearing ? *gearing : Quantity::unauthored(-1.0, Unit::UsdGearing);
+      auto offset = prismatic ? number(prim, ns + "offset", Unit::UsdOffsetMeter, mpu_)
+                              : number(prim, ns + "offset", Unit::UsdOffsetDegree);
+      mimic.offset = offset ? *offset : Quantity::unauthored(0.0, prismatic ? Unit::UsdOffsetMeter : Unit::UsdOffsetDegree);
+      mimic.natural_frequency = number(prim, ns + "naturalFrequency", Unit::PerSecond);
+      mimic.damping_ratio = number(prim, ns + "dampingRatio", Unit::None);
+      joint.mimic = std::move(mimic);
+    }
+  }
+
+  void read_scene(const ComposedPrim& prim) {
+    Scene& scene = result_.asset.scene;
+    if (!prim.has_api_schema("PhysxSceneAPI")) return;
+    if (!scene.timesteps_per_second) scene.timesteps_per_second = number(prim, "physxScene:timeStepsPerSecond", Unit::PerSecond);
+    if (scene.solver.empty()) {
+      if (auto opinion = prim.attribute("physxScene:solverType")) {
+        if (auto token = opinion->attribute->default_value->as_string()) {
+          scene.solver = std::string(*token);
+          scene.solver_span = opinion->attribute->default_value->span;
+        }
+      }
+    }
+  }
+
+  Stage stage_;
+  ReadResult result_;
+  double mpu_ = 0.01;
+  double kpu_ = 1.0;
+};
+
+}  // namespace
+
+ReadResult read_stage(Stage stage) { return Reader(std::move(stage)).run(); }
+
+ReadResult read_usda(std::shared_ptr<const SourceFile> file, const FileSystem& files, const ComposeOptions& options) {
+  return read_stage(compose_stage(std::move(file), files, options));
+}
+
+}  // namespace assetlint::usda
