@@ -37,9 +37,15 @@ class UnitsAngleDegrees final : public Rule {
                       format_number(lower.authored), format_number(upper.authored), joint_label(joint),
                       format_number(largest, 4), format_number(largest / (2 * std::numbers::pi), 3),
                       format_number(min_magnitude, 4), format_number(lower_rad), format_number(upper_rad)));
+      // Convert only the limits that look like degrees themselves: whole numbers or
+      // beyond the threshold. `upper="0.8757"` next to `lower="-46"` is already radians, and
+      // 0 is 0 in both units.
       std::vector<Edit> edits;
-      if (lower.span.valid()) edits.push_back(replace_value(lower, lower_rad));
-      if (upper.span.valid()) edits.push_back(replace_value(upper, upper_rad));
+      for (const Quantity* limit : {&lower, &upper}) {
+        const bool degree_like = limit->value != 0 &&
+                                 (limit->value == std::round(limit->value) || std::fabs(limit->value) > min_magnitude);
+        if (limit->span.valid() && degree_like) edits.push_back(replace_value(*limit, radians_from_degrees(limit->authored)));
+      }
       d.fix = Fix{"convert the limits from degrees to radians", Applicability::Unsafe, std::move(edits)};
     }
   }

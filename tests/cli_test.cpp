@@ -103,11 +103,11 @@ TEST_CASE("cli: JSON output is the documented version-1 object", "[cli]") {
   CHECK(d["rule"] == "units-angle-degrees");
   CHECK(d["severity"] == "error");
   CHECK(d["fix"]["applicability"] == "unsafe");
-  REQUIRE(d["fix"]["edits"].size() == 2);
-  CHECK(d["fix"]["edits"][1]["replacement"] == "0.820305");
-  CHECK(d["fix"]["edits"][1]["length"] == 2);
-  CHECK(d["fix"]["edits"][1]["line"] == 7);
-  CHECK(d["fix"]["edits"][1]["column"] == 29);
+  REQUIRE(d["fix"]["edits"].size() == 1);
+  CHECK(d["fix"]["edits"][0]["replacement"] == "0.820305");
+  CHECK(d["fix"]["edits"][0]["length"] == 2);
+  CHECK(d["fix"]["edits"][0]["line"] == 7);
+  CHECK(d["fix"]["edits"][0]["column"] == 29);
   CHECK(doc["summary"]["files"] == 1);
   CHECK(doc["summary"]["errors"] == 1);
 }
