@@ -24,9 +24,19 @@ std::vector<std::filesystem::path> fixture_assets() {
   return files;
 }
 
+// Reads paths relative to fixtures/, so that layers a .usda fixture composes resolve
+// whatever the working directory is.
+class FixturesFileSystem final : public FileSystem {
+ public:
+  std::optional<std::string> read(const std::string& path, std::string& error) const override {
+    const std::filesystem::path p(path);
+    return disk().read(p.is_absolute() ? path : (test::fixtures_dir() / p).string(), error);
+  }
+};
+
 std::string render(const std::filesystem::path& file) {
   const std::string relative = std::filesystem::relative(file, test::fixtures_dir()).generic_string();
-  FileReport report = lint_text(relative, test::read_file(file), Settings{});
+  FileReport report = lint_text(relative, test::read_file(file), Settings{}, FixturesFileSystem());
   std::ostringstream out;
   write_text(out, {report}, TextOptions{false, false});
   return out.str();

@@ -389,3 +389,64 @@ TEST_CASE("usd reader: the Robotiq configuration layer composes its three layers
   CHECK(stale == 5);
   CHECK(unresolved == 6);  // the binary .usd mesh parts
 }
+
+// --- the project's own Robotiq-2F-85-like fixture, single layer and layered -------------
+namespace {
+ReadResult read_fixture(const char* name) {
+  const auto path = test::fixtures_dir() / "usda" / "robotiq_2f85" / name;
+  return usda::read_usda(std::make_shared<const SourceFile>(path.string(), test::read_file(path)), disk());
+}
+}  // namespace
+
+TEST_CASE("usd reader: the guide's gripper fixture carries the guide's numbers", "[usd][reader]") {
+  for (const char* name : {"robotiq_2f85.usda", "robotiq_2f85_config.usda"}) {
+    INFO(name);
+    ReadResult r = read_fixture(name);
+    REQUIRE(r.usable);
+    CHECK(r.diagnostics.empty());
+    const Asset& a = r.asset;
+    CHECK(a.robot_name.text == "robotiq_2f85");
+    REQUIRE(a.links.size() == 7);
+    REQUIRE(a.joints.size() == 6);
+    const Joint* j0 = a.find_joint("/robotiq_2f85/joints/finger_joint");
+    REQUIRE(j0);
+    REQUIRE(j0->drive);
+    CHECK_THAT(j0->drive->stiffness->value, WithinRel(275.0, 0.001));
+    CHECK_THAT(j0->drive->damping->value, WithinRel(0.0607, 0.001));
+    CHECK(j0->drive->max_force->value == 24);
+    CHECK_THAT(j0->velocity->value, WithinRel(2.9, 1e-4));
+    CHECK_THAT(j0->upper->value, WithinRel(0.820305, 1e-6));
+    CHECK(j0->axis == Eigen::Vector3d::UnitX());
+    CHECK(j0->frame_in_link[0].translation().isApprox(Eigen::Vector3d(0, -0.0306, 0.0549)));
+    int mimics = 0;
+    for (const Joint& j : a.joints) {
+      if (!j.mimic) continue;
+      ++mimics;
+      CHECK_FALSE(j.velocity);
+      CHECK_FALSE(j.drive);
+      CHECK(j.mimic->reference.text == j0->name.text);
+      CHECK(std::fabs(j.mimic->multiplier.value) == 1);
+      // USD gearing = −URDF multiplier: the finger joints follow with −1, the knuckles with +1.
+      CHECK(j.mimic->multiplier.value == (j.lower->value < 0 ? -1 : 1));
+    }
+    CHECK(mimics == 5);
+    const Link* finger = a.find_link("/robotiq_2f85/left_inner_finger");
+    REQUIRE(finger);
+    REQUIRE(finger->inertial);
+    CHECK(finger->inertial->mass.value == Approx(0.0127));
+    CHECK(finger->inertial->inertia(0, 0) == Approx(2.1e-6));
+    CHECK(finger->inertial->com.isApprox(Eigen::Vector3d(0, 0, 0.01)));
+    REQUIRE(a.scene.timesteps_per_second);
+    CHECK(a.scene.timesteps_per_second->value == 60);
+    CHECK(a.scene.position_iterations->value == 64);
+    CHECK(a.scene.solver == "TGS");
+  }
+  // The layered stack: the winning opinions point into the layer that authored them.
+  ReadResult layered = read_fixture("robotiq_2f85_config.usda");
+  REQUIRE(layered.asset.sources.size() == 3);
+  const Joint* j0 = layered.asset.find_joint("/robotiq_2f85/joints/finger_joint");
+  CHECK(layered.asset.source(j0->drive->stiffness->span.file).path().ends_with("robotiq_2f85_physics.usda"));
+  CHECK(layered.asset.source(layered.asset.scene.timesteps_per_second->span.file).path().ends_with("robotiq_2f85_config.usda"));
+  const Link* base = layered.asset.find_link("/robotiq_2f85/base_link");
+  CHECK(layered.asset.source(base->inertial->mass.span.file).path().ends_with("robotiq_2f85_physics.usda"));
+}

@@ -271,8 +271,10 @@ class Composer {
       });
       if (cycle) {
         report(a.arc.span, Severity::Warning,
-               fmt::format("reference cycle: prim '{}'{} is already part of '{}'; the arc is ignored", target_path,
-                           a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset), path));
+               fmt::format("reference cycle: the arc on '{}' leads back to prim '{}'{}, which '{}' is already "
+                           "composed from; the arc is ignored",
+                           path, target_path, a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset),
+                           path));
         continue;
       }
       for (const SpecRef& t : targets) active.push_back(t.prim);
