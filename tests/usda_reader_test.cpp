@@ -9,7 +9,9 @@
 
 #include "engine/linter.h"
 #include "formats/usda/usd_reader.h"
+#include "engine/rule.h"
 #include "report/text_reporter.h"
+#include "rules/registry.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -388,6 +390,25 @@ TEST_CASE("usd reader: the Robotiq configuration layer composes its three layers
   }
   CHECK(stale == 5);
   CHECK(unresolved == 6);  // the binary .usd mesh parts
+
+  // The rules see the composed model: every mimic joint's maxJointVelocity 10000 is reported.
+  std::vector<Diagnostic> findings;
+  for (const Rule* rule : rules::checks()) {
+    Reporter reporter(rule->info(), findings);
+    rule->check(a, Settings{}, reporter);
+  }
+  int mimic_velocity = 0;
+  for (const Diagnostic& d : findings) {
+    if (d.rule != "mimic-max-velocity") continue;
+    ++mimic_velocity;
+    CHECK(a.source(d.span.file).path().ends_with("Robotiq_2F_85_physics_parallel_grip.usda"));
+    CHECK(text_of(r, d.span) == "10000");
+    REQUIRE(d.fix);
+    CHECK(d.fix->edits.size() == 1);
+    CHECK(std::string(text_of(r, Span{d.fix->edits[0].file, d.fix->edits[0].offset, d.fix->edits[0].length, 1, 1}))
+              .find("float physxJoint:maxJointVelocity = 10000\n") != std::string::npos);
+  }
+  CHECK(mimic_velocity == 5);
 }
 
 // --- the project's own Robotiq-2F-85-like fixture, single layer and layered -------------
