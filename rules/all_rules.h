@@ -13,5 +13,12 @@ const Rule& mimic_max_velocity();
 const Rule& mimic_limit_conflict();
 const Rule& inertia_invalid();
 const Rule& drive_max_force();
+const Rule& drive_natural_frequency();
+const Rule& drive_implicit_attenuation();
+const Rule& drive_damping_ratio();
+const Rule& armature_excessive();
+const Rule& mimic_copied_drive_gains();
+const Rule& mimic_drive_conflict();
+const Rule& joint_max_velocity();
 
 }  // namespace assetlint::rules

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "physics/gripper.h"
 #include "rules/all_rules.h"
 #include "rules/support.h"
 #include "util/numbers.h"
@@ -17,6 +18,7 @@ class DriveMaxForce final : public Rule {
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double placeholder = rule_option(info_, settings, "placeholder_force");
+    const Joint* spec = physics::spec_joint(asset, settings);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
       const bool usd = asset.format == SourceFormat::Usda;
@@ -49,15 +51,31 @@ class DriveMaxForce final : public Rule {
                                joint_label(joint), what, describe(q), format_number(placeholder)));
       } else if (q.value < 0) {
         out.report(q.span, fmt::format("driven {} has negative {} {}", joint_label(joint), what, describe(q)));
+      } else if (&joint == spec) {
+        check_spec(asset, settings, joint, q, what, out);
       }
     }
   }
 
  private:
+  // The guide's derivation from the payload spec (PHYSICS.md §3): the drive must hold
+  // the payload through every joint it moves.
+  static void check_spec(const Asset& asset, const Settings& settings, const Joint& joint, const Quantity& q,
+                         const char* what, Reporter& out) {
+    const auto required = physics::required_force(asset, settings, joint);
+    if (!required || q.value >= required->required * (1 - 1e-9)) return;
+    Diagnostic& d = out.report(q.span, fmt::format("{} {} of {} is below the {} the payload spec needs: {}", what,
+                                                   describe(q), joint_label(joint),
+                                                   describe(required->required, q.unit), required->derivation));
+    if (q.span.valid())
+      d.fix = Fix{"raise the max force to the payload spec's", Applicability::Unsafe,
+                  {Edit{q.span.file, q.span.offset, q.span.length, format_number_at_least(q.authored_for(required->required), 3)}}};
+  }
+
   RuleInfo info_{"drive-max-force",
-                 "A driven joint's maximum force is zero, unbounded, or a placeholder",
+                 "A driven joint's maximum force is zero, unbounded, a placeholder, or below the payload spec",
                  Severity::Warning,
-                 false,
+                 true,
                  RuleOrigin::Check,
                  {{"placeholder_force", 1e6, "efforts at or above this (N·m or N) are placeholders, not limits"}}};
 };

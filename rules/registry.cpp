@@ -18,6 +18,13 @@ const std::vector<const Rule*>& checks() {
       &mimic_limit_conflict(),
       &inertia_invalid(),
       &drive_max_force(),
+      &drive_natural_frequency(),
+      &drive_implicit_attenuation(),
+      &drive_damping_ratio(),
+      &armature_excessive(),
+      &mimic_copied_drive_gains(),
+      &mimic_drive_conflict(),
+      &joint_max_velocity(),
   };
   return list;
 }

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "config/config.h"
 #include "engine/linter.h"
 #include "report/text_reporter.h"
 #include "test_support.h"
@@ -36,7 +37,15 @@ class FixturesFileSystem final : public FileSystem {
 
 std::string render(const std::filesystem::path& file) {
   const std::string relative = std::filesystem::relative(file, test::fixtures_dir()).generic_string();
-  FileReport report = lint_text(relative, test::read_file(file), Settings{}, FixturesFileSystem());
+  // A fixture directory may hold an asset-lint.toml (simulation rate, gripper spec,
+  // drive gains for URDF), found as the CLI finds it.
+  Settings settings;
+  if (const auto config_path = config::discover(file); !config_path.empty()) {
+    const auto error = config::load(config_path.string(), settings);
+    INFO((error ? error->to_string() : std::string()));
+    REQUIRE_FALSE(error);
+  }
+  FileReport report = lint_text(relative, test::read_file(file), settings, FixturesFileSystem());
   std::ostringstream out;
   write_text(out, {report}, TextOptions{false, false});
   return out.str();

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "cli/rule_docs.h"
+#include "config/resolver.h"
 #include "engine/linter.h"
 #include "fix/command.h"
 #include "report/json_reporter.h"
@@ -89,6 +90,8 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   std::string color = "auto";
   bool show_rules = false, show_version = false;
   bool fix = false, unsafe_fixes = false, diff = false;
+  std::string config_path;
+  double timesteps = 0, iterations = 0;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   app.add_option("paths", paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
   app.add_option("--select", select, "Only these rules (comma list, globs such as 'mimic-*')")
@@ -98,6 +101,12 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   app.add_option("--output-format", format, "Output format")->check(CLI::IsMember({"text", "json"}));
   app.add_option("--color", color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
   app.add_option("-j,--jobs", jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
+  app.add_option("--config", config_path, "Use this asset-lint.toml for every file (default: the nearest one above each file)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--timesteps-per-second", timesteps, "Simulation rate, when the asset's stage authors none")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--position-iterations", iterations, "Solver position iterations, when the asset authors none")
+      ->check(CLI::Range(1.0, 255.0));
   app.add_flag("--fix", fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", diff, "Print a unified diff of what --fix would change; write nothing");
@@ -132,30 +141,36 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   }
   if (!validate_patterns(select, "--select", err) || !validate_patterns(ignore, "--ignore", err)) return kExitError;
 
-  Settings settings;
-  settings.selection.select = select;
-  settings.selection.ignore = ignore;
+  config::CommandLineOverrides overrides;
+  if (app.count("--select")) overrides.select = select;
+  if (app.count("--ignore")) overrides.ignore = ignore;
+  if (app.count("--timesteps-per-second")) overrides.timesteps_per_second = timesteps;
+  if (app.count("--position-iterations")) overrides.position_iterations = iterations;
+  config::SettingsResolver resolver(overrides, config_path.empty() ? std::nullopt : std::optional(config_path));
 
   const bool use_color = color == "always" || (color == "auto" && out_is_terminal && !std::getenv("NO_COLOR"));
   auto write_report = [&](const std::vector<FileReport>& reports) {
     if (format == "json") write_json(out, reports);
     else write_text(out, reports, TextOptions{use_color, true});
   };
-  if (fix || diff) {
-    fix::FixCommandOptions fix_options;
-    fix_options.diff = diff;
-    fix_options.unsafe = unsafe_fixes;
-    fix_options.jobs = jobs;
-    return fix::run_fix_command(paths, settings, fix_options, out, err, write_report);
-  }
+  fix::FixCommandOptions fix_options;
+  fix_options.diff = diff;
+  fix_options.unsafe = unsafe_fixes;
+  fix_options.jobs = jobs;
 
   PathExpansion expansion = expand_paths(paths);
+  if (auto error = resolver.prepare(expansion.files)) {
+    err << "asset-lint: error: " << error->to_string() << "\n";
+    return kExitError;
+  }
+  if (fix || diff) return fix::run_fix_command(paths, resolver.as_function(), fix_options, out, err, write_report);
+
   bool io_error = false;
   for (const auto& message : expansion.errors) {
     err << "asset-lint: error: " << message << "\n";
     io_error = true;
   }
-  std::vector<FileReport> reports = lint_files(expansion.files, settings, jobs);
+  std::vector<FileReport> reports = lint_files(expansion.files, resolver.as_function(), jobs);
   std::erase_if(reports, [&](const FileReport& report) {
     if (!report.error) return false;
     err << "asset-lint: error: " << *report.error << "\n";

@@ -193,7 +193,11 @@ std::filesystem::path discover(const std::filesystem::path& file) {
   std::filesystem::path dir = std::filesystem::absolute(file, ec).parent_path();
   while (!dir.empty()) {
     const auto candidate = dir / kFileName;
-    if (std::filesystem::is_regular_file(candidate, ec)) return std::filesystem::proximate(candidate, ec);
+    if (std::filesystem::is_regular_file(candidate, ec)) {
+      // Shown in messages: relative to the working directory when it is below it.
+      const auto relative = std::filesystem::relative(candidate, ec);
+      return !ec && !relative.empty() && *relative.begin() != ".." ? relative : candidate;
+    }
     if (dir == dir.root_path()) break;
     dir = dir.parent_path();
   }

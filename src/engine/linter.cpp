@@ -92,10 +92,14 @@ FileReport lint_file(const std::string& path, const Settings& settings, const Fi
 }
 
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs) {
+  return lint_files(paths, [&](const std::string&) -> const Settings& { return settings; }, jobs);
+}
+
+std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const SettingsFor& settings, unsigned jobs) {
   std::vector<FileReport> reports(paths.size());
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
-    for (std::size_t i = next++; i < paths.size(); i = next++) reports[i] = lint_file(paths[i], settings);
+    for (std::size_t i = next++; i < paths.size(); i = next++) reports[i] = lint_file(paths[i], settings(paths[i]));
   };
   jobs = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(paths.size())));
   std::vector<std::thread> threads;

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the readers and the rules over files: the one entry point the CLI, the fixer
 // and the tests share.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,9 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
                      const FileSystem& files = disk());
 // Lints files in parallel on `jobs` threads; the reports keep the order of `paths`.
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs);
+// The same, with each file's own settings (its asset-lint.toml).
+using SettingsFor = std::function<const Settings&(const std::string& path)>;
+std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const SettingsFor& settings, unsigned jobs);
 
 // Files to check for the given paths: files as given, directories searched
 // recursively for *.urdf and *.usda (hidden directories skipped), sorted.

@@ -36,7 +36,7 @@ std::string diff_label(const char* prefix, const std::string& path) {
 
 }  // namespace
 
-int run_fix_command(const std::vector<std::string>& paths, const Settings& settings,
+int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& settings,
                     const FixCommandOptions& options, std::ostream& out, std::ostream& err,
                     const std::function<void(const std::vector<FileReport>&)>& write_report) {
   bool failed = false;
@@ -67,7 +67,7 @@ int run_fix_command(const std::vector<std::string>& paths, const Settings& setti
       FixOptions fix_options;
       fix_options.unsafe = options.unsafe;
       fix_options.scope = targets[i].scope;
-      results[i] = fix_file(targets[i].path, settings, fix_options);
+      results[i] = fix_file(targets[i].path, settings(targets[i].path), fix_options);
     }
   };
   const unsigned jobs = std::max(1u, std::min<unsigned>(options.jobs, static_cast<unsigned>(targets.size())));
@@ -107,7 +107,7 @@ int run_fix_command(const std::vector<std::string>& paths, const Settings& setti
     if (write_failed) {
       failed = true;
       // Report what is on disk now.
-      remaining.push_back(lint_file(result.path, settings));
+      remaining.push_back(lint_file(result.path, settings(result.path)));
     } else {
       remaining.push_back(std::move(result.remaining));
     }

@@ -22,7 +22,7 @@ struct FixCommandOptions {
 // when none, 2 on errors. Otherwise writes the fixed files, prints what remains with
 // `write_report`, and returns 0 when nothing remains, 1 when findings remain, 2 on
 // read/write errors or fixes that do not converge. Per-file progress and errors go to `err`.
-int run_fix_command(const std::vector<std::string>& paths, const Settings& settings,
+int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& settings,
                     const FixCommandOptions& options, std::ostream& out, std::ostream& err,
                     const std::function<void(const std::vector<FileReport>&)>& write_report);
 

@@ -1,0 +1,47 @@
+#include "config/resolver.h"
+
+namespace assetlint::config {
+
+SettingsResolver::SettingsResolver(CommandLineOverrides overrides, std::optional<std::string> explicit_config)
+    : overrides_(std::move(overrides)), explicit_config_(std::move(explicit_config)) {}
+
+const Settings& SettingsResolver::load(const std::string& config_path, std::optional<ConfigError>& error) {
+  auto it = by_config_.find(config_path);
+  if (it != by_config_.end()) return *it->second;
+  auto settings = std::make_unique<Settings>();
+  if (!config_path.empty()) error = config::load(config_path, *settings);
+  if (overrides_.select) settings->selection.select = *overrides_.select;
+  if (overrides_.ignore) settings->selection.ignore = *overrides_.ignore;
+  if (overrides_.timesteps_per_second)
+    settings->simulation.timesteps_per_second = Configured<double>{*overrides_.timesteps_per_second, "--timesteps-per-second"};
+  if (overrides_.position_iterations)
+    settings->simulation.position_iterations = Configured<double>{*overrides_.position_iterations, "--position-iterations"};
+  return *by_config_.emplace(config_path, std::move(settings)).first->second;
+}
+
+std::optional<ConfigError> SettingsResolver::prepare(const std::vector<std::string>& files) {
+  std::lock_guard lock(mutex_);
+  std::optional<ConfigError> error;
+  if (explicit_config_) {
+    load(*explicit_config_, error);
+    return error;
+  }
+  for (const auto& file : files) {
+    load(discover(file).string(), error);
+    if (error) return error;
+  }
+  if (files.empty()) load("", error);
+  return error;
+}
+
+const Settings& SettingsResolver::for_file(const std::string& path) {
+  std::lock_guard lock(mutex_);
+  std::optional<ConfigError> ignored;  // prepare() reported it
+  return load(explicit_config_ ? *explicit_config_ : discover(path).string(), ignored);
+}
+
+std::function<const Settings&(const std::string&)> SettingsResolver::as_function() {
+  return [this](const std::string& path) -> const Settings& { return for_file(path); };
+}
+
+}  // namespace assetlint::config

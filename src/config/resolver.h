@@ -1,0 +1,45 @@
+#pragma once
+// Which settings apply to which file: the nearest asset-lint.toml (or the one named
+// with --config) with the command line's options on top.
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/config.h"
+#include "engine/settings.h"
+
+namespace assetlint::config {
+
+// Options given on the command line; they win over every configuration file.
+struct CommandLineOverrides {
+  std::optional<std::vector<std::string>> select;
+  std::optional<std::vector<std::string>> ignore;
+  std::optional<double> timesteps_per_second;
+  std::optional<double> position_iterations;
+};
+
+class SettingsResolver {
+ public:
+  SettingsResolver(CommandLineOverrides overrides, std::optional<std::string> explicit_config);
+
+  // Loads the configuration of every file up front, so that an invalid one stops the
+  // run before anything is checked. Returns the first error.
+  std::optional<ConfigError> prepare(const std::vector<std::string>& files);
+  // The settings of a file (prepare() must have seen it, or it is loaded now). Thread-safe.
+  const Settings& for_file(const std::string& path);
+  std::function<const Settings&(const std::string&)> as_function();
+
+ private:
+  const Settings& load(const std::string& config_path, std::optional<ConfigError>& error);
+
+  CommandLineOverrides overrides_;
+  std::optional<std::string> explicit_config_;
+  std::mutex mutex_;
+  std::map<std::string, std::unique_ptr<Settings>> by_config_;  // "" = no configuration file
+};
+
+}  // namespace assetlint::config
