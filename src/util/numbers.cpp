@@ -76,7 +76,8 @@ std::string format_number(double value, int significant) {
 std::string format_number_at_least(double value, int significant) {
   for (int digits = significant; digits < 17; ++digits) {
     std::string text = format_number(value, digits);
-    if (auto back = parse_double(text); back && *back >= value) return text;
+    // Within 1e-9 counts as equal: the value itself carries rounding error.
+    if (auto back = parse_double(text); back && *back >= value - 1e-9 * std::fabs(value)) return text;
   }
   return format_number(value, 17);
 }
