@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "engine/linter.h"
+#include "formats/urdf/urdf_reader.h"
 #include "physics/drive.h"
 #include "physics/gripper.h"
 #include "test_support.h"
@@ -90,8 +91,19 @@ TEST_CASE("guide: stiffness, natural frequency, damping and armature", "[guide]"
 }
 
 TEST_CASE("guide: the effective inertia of J0 is the lighter link, shifted to the joint", "[guide]") {
-  const FileReport report = lint_gripper(Settings{});
-  REQUIRE(report.diagnostics.empty());
+  const auto path = test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf";
+  const ReadResult read = urdf::read_urdf(std::make_shared<const SourceFile>("g.urdf", test::read_file(path)));
+  REQUIRE(read.usable);
+  const Joint* j0 = read.asset.find_joint("finger_joint");
+  REQUIRE(j0);
+  const physics::EffectiveInertia inertia = physics::effective_inertia(read.asset, *j0);
+  REQUIRE(inertia.known);
+  CHECK(inertia.link_inertia == Approx(3.37e-6).epsilon(1e-9));  // 2.1e-6 + 0.0127 × 0.01²
+  CHECK(inertia.link->name.text == "left_inner_finger");
+  CHECK(inertia.armature == 0.0);
+  CHECK(physics::coupled_joints(read.asset, *j0).size() == 6);
+  // The guide lints clean without drive gains: URDF has none.
+  CHECK(lint_gripper(Settings{}).diagnostics.empty());
 }
 
 TEST_CASE("guide: k = 5700 at 250 Hz × 64 reports nf ≈ 4.1e4 and proposes k ≈ 275, d ≈ 0.061", "[guide]") {
