@@ -458,7 +458,7 @@ TEST_CASE("usd reader: the guide's gripper fixture carries the guide's numbers",
     CHECK(finger->inertial->inertia(0, 0) == Approx(2.1e-6));
     CHECK(finger->inertial->com.isApprox(Eigen::Vector3d(0, 0, 0.01)));
     REQUIRE(a.scene.timesteps_per_second);
-    CHECK(a.scene.timesteps_per_second->value == 60);
+    CHECK(a.scene.timesteps_per_second->value == 250);
     CHECK(a.scene.position_iterations->value == 64);
     CHECK(a.scene.solver == "TGS");
   }

@@ -218,10 +218,24 @@ class Reader {
     result_.asset.links.push_back(std::move(link));
   }
 
-  Name body(const ComposedPrim& prim, std::string_view rel, const Span& fallback) {
+  // The first target of a relationship, as a name with the span of its path literal.
+  Name target(const ComposedPrim& prim, std::string_view rel, const Span& fallback) {
     auto opinion = prim.relationship(rel);
     if (!opinion || opinion->targets.empty()) return Name{std::string(), fallback};
     return Name{opinion->targets.front(), opinion->target_values.front()->span};
+  }
+
+  Name body(const ComposedPrim& prim, std::string_view rel, const Span& fallback) {
+    Name name = target(prim, rel, fallback);
+    if (name.text.empty()) return name;
+    const std::string& target = name.text;
+    const Span span = name.span;
+    // A prim that is on the stage but no rigid body is static, like the world: the
+    // joint anchors there (empty name). A target that is not on the stage keeps its
+    // name, and structure-undefined-link reports it.
+    if (const ComposedPrim* target_prim = stage_.find(target); target_prim && !target_prim->has_api_schema("PhysicsRigidBodyAPI"))
+      return Name{std::string(), span};
+    return Name{target, span};
   }
 
   void read_joint(const ComposedPrim& prim, JointType type) {
@@ -347,7 +361,7 @@ class Reader {
       Mimic mimic;
       mimic.span = span;
       mimic.instance = inst;
-      mimic.reference = body(prim, ns + "referenceJoint", span);
+      mimic.reference = target(prim, ns + "referenceJoint", span);
       auto gearing = number(prim, ns + "gearing", Unit::UsdGearing);
       mimic.multiplier = gearing ? *gearing : Quantity::unauthored(-1.0, Unit::UsdGearing);
       auto offset = prismatic ? number(prim, ns + "offset", Unit::UsdOffsetMeter, mpu_)
