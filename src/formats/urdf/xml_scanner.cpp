@@ -118,12 +118,15 @@ class Scanner {
     do {
       if (pos >= text_.size()) break;
       if (text_[pos] != '<') {
-        const std::size_t next = text_.find('<', pos);
-        if (text_.find('\0', pos) < std::min(next, text_.size())) {
-          problem(text_.find('\0', pos), 1, "NUL byte inside the XML document", false);
+        const std::size_t next = std::min(text_.find('<', pos), text_.size());
+        // Only the text up to the next markup: searching the rest of the file would
+        // make the scan quadratic.
+        const std::size_t nul = text_.substr(pos, next - pos).find('\0');
+        if (nul != std::string_view::npos) {
+          problem(pos + nul, 1, "NUL byte inside the XML document", false);
           return;
         }
-        pos = next == std::string_view::npos ? text_.size() : next;
+        pos = next;
         continue;
       }
       if (text_.compare(pos, 4, "<!--") == 0) {
