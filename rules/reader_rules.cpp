@@ -27,4 +27,9 @@ const RuleInfo kMimicAxisInstance{
     "PhysxMimicJointAPI applied with an instance other than rotX/rotY/rotZ: PhysX silently ignores the mimic",
     Severity::Warning, false, RuleOrigin::Reader, {}};
 
+const RuleInfo kUnusedSuppression{
+    "unused-suppression",
+    "An inline suppression comment that suppresses nothing, names an unknown rule, or is malformed",
+    Severity::Warning, true, RuleOrigin::Reader, {}};
+
 }  // namespace assetlint::rules

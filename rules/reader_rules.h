@@ -10,5 +10,6 @@ extern const RuleInfo kUrdfInvalid;
 extern const RuleInfo kLayerUnresolved;
 extern const RuleInfo kStaleSchemaAttribute;
 extern const RuleInfo kMimicAxisInstance;
+extern const RuleInfo kUnusedSuppression;
 
 }  // namespace assetlint::rules

@@ -10,6 +10,37 @@ packages=(
   catch2 libtomlplusplus-dev nlohmann-json3-dev
 )
 
+# Optional tools some tests use when present (they warn and skip otherwise). Installing
+# them is best effort: a failure here never fails the bootstrap.
+#  - pre-commit (Debian package, ~12 small Python packages): the .pre-commit-hooks.yaml test;
+#  - the SARIF Multitool (npm, a self-contained .NET binary, ~100 MB) into tools/node_modules
+#    (git-ignored): validates the SARIF output. Skipped without npm, or with
+#    ASSET_LINT_SKIP_OPTIONAL=1.
+install_optional() {
+  [ "${ASSET_LINT_SKIP_OPTIONAL:-0}" = "1" ] && return 0
+  local root
+  root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+  if ! command -v pre-commit >/dev/null 2>&1; then
+    echo "bootstrap: (optional) installing pre-commit"
+    local sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends pre-commit \
+      || echo "bootstrap: warning: pre-commit not installed; its test will be skipped"
+  fi
+  local multitool="$root/tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool"
+  if [ ! -x "$multitool" ] && command -v npm >/dev/null 2>&1; then
+    echo "bootstrap: (optional) installing the SARIF Multitool into tools/node_modules"
+    mkdir -p "$root/tools"
+    if (cd "$root/tools" && timeout 600 npm install --no-save --no-audit --no-fund --prefix . \
+          @microsoft/sarif-multitool-linux >/dev/null 2>&1); then
+      chmod u+x "$multitool" 2>/dev/null || true
+    else
+      echo "bootstrap: warning: SARIF Multitool not installed; the SARIF validation test will be skipped"
+    fi
+  fi
+  return 0
+}
+
 missing=()
 for pkg in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
@@ -19,6 +50,7 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "bootstrap: all ${#packages[@]} packages already installed"
+  install_optional || true
   exit 0
 fi
 
@@ -28,3 +60,4 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_optional || true

@@ -4,13 +4,20 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "cli/rule_docs.h"
 #include "config/resolver.h"
 #include "engine/linter.h"
 #include "fix/command.h"
+#include "report/concise_reporter.h"
+#include "report/github_reporter.h"
 #include "report/json_reporter.h"
+#include "report/junit_reporter.h"
+#include "report/sarif_reporter.h"
+#include "report/statistics.h"
 #include "report/summary.h"
 #include "report/text_reporter.h"
 #include "rules/registry.h"
@@ -90,6 +97,8 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   std::string color = "auto";
   bool show_rules = false, show_version = false;
   bool fix = false, unsafe_fixes = false, diff = false;
+  bool statistics = false, exit_zero = false, quiet = false;
+  std::string output_file;
   std::string config_path;
   double timesteps = 0, iterations = 0;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
@@ -98,7 +107,12 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
       ->delimiter(',')
       ->allow_extra_args(false);
   app.add_option("--ignore", ignore, "Skip these rules (comma list, globs)")->delimiter(',')->allow_extra_args(false);
-  app.add_option("--output-format", format, "Output format")->check(CLI::IsMember({"text", "json"}));
+  app.add_option("--output-format", format, "Output format: text, concise, json, sarif, github or junit")
+      ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "junit"}));
+  app.add_option("--output-file", output_file, "Write the report to this file instead of standard output");
+  app.add_flag("--statistics", statistics, "Print the number of findings per rule instead of the findings");
+  app.add_flag("--exit-zero", exit_zero, "Exit 0 even when findings remain (still 2 on errors)");
+  app.add_flag("-q,--quiet", quiet, "Text output: only the findings, no summary line");
   app.add_option("--color", color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
   app.add_option("-j,--jobs", jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
   app.add_option("--config", config_path, "Use this asset-lint.toml for every file (default: the nearest one above each file)")
@@ -140,6 +154,19 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
     return kExitError;
   }
   if (!validate_patterns(select, "--select", err) || !validate_patterns(ignore, "--ignore", err)) return kExitError;
+  if (statistics && format != "text" && format != "concise" && format != "json") {
+    err << "asset-lint: error: --statistics works with --output-format text, concise or json\n";
+    return kExitError;
+  }
+  std::ofstream report_file;
+  if (!output_file.empty()) {
+    report_file.open(output_file, std::ios::binary | std::ios::trunc);
+    if (!report_file) {
+      err << fmt::format("asset-lint: error: cannot write '{}'\n", output_file);
+      return kExitError;
+    }
+  }
+  std::ostream& report_out = output_file.empty() ? out : report_file;
 
   config::CommandLineOverrides overrides;
   if (app.count("--select")) overrides.select = select;
@@ -148,10 +175,33 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   if (app.count("--position-iterations")) overrides.position_iterations = iterations;
   config::SettingsResolver resolver(overrides, config_path.empty() ? std::nullopt : std::optional(config_path));
 
-  const bool use_color = color == "always" || (color == "auto" && out_is_terminal && !std::getenv("NO_COLOR"));
+  const bool use_color = color == "always" || (color == "auto" && out_is_terminal && output_file.empty() &&
+                                               !std::getenv("NO_COLOR"));
   auto write_report = [&](const std::vector<FileReport>& reports) {
-    if (format == "json") write_json(out, reports);
-    else write_text(out, reports, TextOptions{use_color, true});
+    if (statistics && format == "json") write_statistics_json(report_out, reports);
+    else if (statistics) {
+      write_statistics_text(report_out, reports);
+      const Summary s = summarize(reports);
+      if (!quiet && s.fixable) report_out << "[*] fixable with `asset-lint --fix`\n";
+    } else if (format == "json") write_json(report_out, reports);
+    else if (format == "concise") write_concise(report_out, reports);
+    else if (format == "github") write_github(report_out, reports);
+    else if (format == "sarif") {
+      std::error_code ec;
+      write_sarif(report_out, reports, SarifOptions{std::filesystem::current_path(ec).string()});
+    } else if (format == "junit") {
+      write_junit(report_out, reports,
+                  [&](const FileReport& r) { return rules_run_on(resolver.for_file(r.path), r.path); });
+    } else write_text(report_out, reports, TextOptions{use_color, !quiet});
+    report_out.flush();
+  };
+  // --exit-zero turns "findings remain" into success; errors stay errors.
+  auto finish = [&](int code) {
+    if (!output_file.empty() && !report_file) {
+      err << fmt::format("asset-lint: error: cannot write '{}'\n", output_file);
+      return kExitError;
+    }
+    return exit_zero && code == kExitFindings ? kExitClean : code;
   };
   fix::FixCommandOptions fix_options;
   fix_options.diff = diff;
@@ -163,7 +213,8 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
     err << "asset-lint: error: " << error->to_string() << "\n";
     return kExitError;
   }
-  if (fix || diff) return fix::run_fix_command(paths, resolver.as_function(), fix_options, out, err, write_report);
+  if (fix || diff)
+    return finish(fix::run_fix_command(paths, resolver.as_function(), fix_options, out, err, write_report));
 
   bool io_error = false;
   for (const auto& message : expansion.errors) {
@@ -179,8 +230,8 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   });
 
   write_report(reports);
-  if (io_error) return kExitError;
-  return summarize(reports).total() == 0 ? kExitClean : kExitFindings;
+  if (io_error) return finish(kExitError);
+  return finish(summarize(reports).total() == 0 ? kExitClean : kExitFindings);
 }
 
 }  // namespace assetlint::cli

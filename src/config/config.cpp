@@ -24,6 +24,7 @@ class Loader {
       const std::string_view name = key.str();
       if (name == "select") settings_.selection.select = rule_patterns(node, name);
       else if (name == "ignore") settings_.selection.ignore = rule_patterns(node, name);
+      else if (name == "per-file-ignores") per_file_ignores(table(node, name));
       else if (name == "simulation") simulation(table(node, name));
       else if (name == "gripper") gripper(table(node, name));
       else if (name == "drives") drives(table(node, name));
@@ -92,6 +93,18 @@ class Loader {
       patterns.push_back(std::move(pattern));
     }
     return patterns;
+  }
+
+  // per-file-ignores = { "legacy/**" = ["units-*"], "*.usda" = ["stale-schema-attribute"] }
+  void per_file_ignores(const toml::table& t) {
+    for (const auto& [glob, node] : t) {
+      if (glob.str().empty()) fail(node, "per-file-ignores: the file glob is empty");
+      PerFileIgnore entry;
+      entry.glob = std::string(glob.str());
+      entry.rules = rule_patterns(node, fmt::format("per-file-ignores.\"{}\"", glob.str()));
+      entry.origin = origin(node);
+      settings_.per_file_ignores.push_back(std::move(entry));
+    }
   }
 
   void simulation(const toml::table& t) {

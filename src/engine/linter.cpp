@@ -9,6 +9,7 @@
 
 #include "config/drive_overrides.h"
 #include "engine/rule.h"
+#include "engine/suppressions.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "rules/registry.h"
@@ -73,6 +74,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     if (const RuleInfo* info = rules::find_rule(d.rule); info && d.severity == info->default_severity)
       d.severity = settings.severity_for(d.rule, d.severity);
   }
+  apply_suppressions(result.asset.sources, diagnostics, settings);
   sort_diagnostics(diagnostics);
   report.diagnostics = std::move(diagnostics);
   report.sources = std::move(result.asset.sources);

@@ -56,8 +56,17 @@ struct DriveSettings {
   std::string origin;                            // the [drives.<joint>] table
 };
 
+// per-file-ignores: rules skipped for files matching a path glob (relative to the
+// configuration file's directory).
+struct PerFileIgnore {
+  std::string glob;
+  std::vector<std::string> rules;
+  std::string origin;  // "asset-lint.toml:12"
+};
+
 struct Settings {
   RuleSelection selection;
+  std::vector<PerFileIgnore> per_file_ignores;
   SimulationSettings simulation;
   GripperSpec gripper;
   std::map<std::string, DriveSettings, std::less<>> drives;

@@ -1,0 +1,15 @@
+#include "report/concise_reporter.h"
+
+#include <fmt/format.h>
+
+#include "report/report_util.h"
+
+namespace assetlint {
+
+void write_concise(std::ostream& out, const std::vector<FileReport>& reports) {
+  for (const auto& report : reports)
+    for (const auto& d : report.diagnostics)
+      out << fmt::format("{}:{}:{}: {} {}\n", diagnostic_path(report, d), d.span.line, d.span.column, d.rule, d.message);
+}
+
+}  // namespace assetlint

@@ -1,0 +1,46 @@
+#include "report/github_reporter.h"
+
+#include <fmt/format.h>
+
+#include "report/report_util.h"
+#include "report/summary.h"
+
+namespace assetlint {
+
+std::string github_escape_data(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (c == '%') out += "%25";
+    else if (c == '\r') out += "%0D";
+    else if (c == '\n') out += "%0A";
+    else out += c;
+  }
+  return out;
+}
+
+std::string github_escape_property(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : github_escape_data(text)) {
+    if (c == ':') out += "%3A";
+    else if (c == ',') out += "%2C";
+    else out += c;
+  }
+  return out;
+}
+
+void write_github(std::ostream& out, const std::vector<FileReport>& reports) {
+  for (const auto& report : reports) {
+    for (const auto& d : report.diagnostics) {
+      const char* command = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "notice";
+      const LineColumn end = end_position(report, d.span);
+      out << fmt::format("::{} file={},line={},col={},endLine={},endColumn={},title={}::{}\n", command,
+                         github_escape_property(diagnostic_path(report, d)), d.span.line, d.span.column, end.line,
+                         end.column, github_escape_property(fmt::format("asset-lint ({})", d.rule)),
+                         github_escape_data(d.message));
+    }
+  }
+}
+
+}  // namespace assetlint
