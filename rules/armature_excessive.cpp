@@ -25,6 +25,15 @@ class ArmatureExcessive final : public Rule {
       const double armature = joint.armature->value;
       const double ratio = armature / inertia.link_inertia;
       if (ratio <= factor) continue;
+      // The datasheet justification the guide asks for: armature = G²·I_rotor.
+      std::string motor_text;
+      if (joint.motor) {
+        const double reflected = joint.motor->gear_ratio * joint.motor->gear_ratio * joint.motor->rotor_inertia.value;
+        if (armature <= reflected * (1 + 1e-6)) continue;
+        motor_text = fmt::format("; the declared motor ({}: G = {}, I_rotor = {} kg·m²) reflects only {} kg·m²",
+                                 joint.motor->origin, format_number(joint.motor->gear_ratio),
+                                 format_number(joint.motor->rotor_inertia.value, 3), format_number(reflected, 3));
+      }
       const bool angular = is_angular(joint.type);
       const char* unit = angular ? "kg·m²" : "kg";
       const double gear = std::sqrt(ratio);
@@ -35,6 +44,7 @@ class ArmatureExcessive final : public Rule {
           format_number(armature, 3), unit, joint_label(joint), format_number(ratio, 3),
           format_number(inertia.link_inertia, 3), unit, inertia.link->name.text, format_number(factor),
           format_number(gear, 3));
+      message += motor_text;
       if (joint.drive && joint.drive->stiffness && joint.drive->stiffness->value > 0 &&
           joint.drive->type == DriveType::Force) {
         const double k = joint.drive->stiffness->value;

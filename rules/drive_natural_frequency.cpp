@@ -59,23 +59,31 @@ class DriveNaturalFrequency final : public Rule {
       std::string reason;
       const Quantity* force = max_force_of(joint);
       const auto delta = target_delta(joint, settings);
-      if (force && force->value > 0 && std::isfinite(force->value) && delta && drive.type == DriveType::Force) {
+      const bool force_known = force && force->value > 0 && std::isfinite(force->value);
+      if (force_known && delta && drive.type == DriveType::Force) {
         const double k_force = force->value / *delta;
-        if (physics::natural_frequency(k_force, inertia) <= bound) {
-          proposed = k_force;
-          reason = fmt::format("max force {} reached {}° before the target", describe(*force),
-                               format_number(settings.gripper.target_delta_deg.value));
+        const double nf_force = physics::natural_frequency(k_force, inertia);
+        if (nf_force > bound) {
+          // Lowering k further would lose the max force at the target delta: the guide's
+          // other levers are armature and the simulation rate.
+          const double armature = k_force / (warn * warn) - inertia;
+          message += fmt::format(
+              "; even the guide's stiffness (max force {} / {}° target delta = {}) gives {} rad/s: add armature ≥ {} "
+              "kg·m² (natural frequency {}× the rate) or simulate at ≥ {} Hz",
+              describe(*force), format_number(settings.gripper.target_delta_deg.value),
+              describe_gain(drive.stiffness, k_force, k_unit), format_number(nf_force, 4), format_number(armature, 3),
+              format_number(factor), format_number(std::ceil(nf_force / rate.position_iterations), 4));
+          out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
+          continue;
         }
+        proposed = k_force;
+        reason = fmt::format("max force {} reached {}° before the target", describe(*force),
+                             format_number(settings.gripper.target_delta_deg.value));
       }
       if (!proposed) {
+        // No force bound to keep: the stiffness for a natural frequency at the warning threshold.
         proposed = physics::stiffness_for_frequency(warn, inertia);
-        reason = fmt::format("natural frequency {}× the rate", format_number(factor));
-      }
-      if (*proposed >= driven->stiffness) {
-        message += "; the guide's stiffness (max force / target delta) is not lower: add armature or raise the "
-                   "simulation rate";
-        out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
-        continue;
+        reason = fmt::format("natural frequency {}× the rate; no max force to keep", format_number(factor));
       }
       const double damping = physics::damping_for_ratio(1.0, *proposed, inertia);
       message += fmt::format("; stiffness {} → {} ({}), damping → {} for damping ratio 1 (natural frequency {} rad/s)",
@@ -85,7 +93,10 @@ class DriveNaturalFrequency final : public Rule {
                              format_number(physics::natural_frequency(*proposed, inertia), 3));
       Diagnostic& d = out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
       std::vector<Edit> edits;
-      if (drive.stiffness->span.valid()) edits.push_back(replace_value(*drive.stiffness, *proposed, 4));
+      // Rounded down, so the written stiffness does not land back above the threshold.
+      if (drive.stiffness->span.valid())
+        edits.push_back(Edit{drive.stiffness->span.file, drive.stiffness->span.offset, drive.stiffness->span.length,
+                             format_number_at_most(drive.stiffness->authored_for(*proposed), 4)});
       if (drive.damping && drive.damping->span.valid()) edits.push_back(replace_value(*drive.damping, damping, 4));
       if (!edits.empty())
         d.fix = Fix{"set stiffness and damping per the guide", Applicability::Unsafe, std::move(edits)};

@@ -85,14 +85,25 @@ class MimicCopiedDriveGains final : public Rule {
         const double d = driver->drive->damping ? driver->drive->damping->value : 0.0;
         const double new_nf = physics::natural_frequency(k, inertia.value);
         const double new_dr = physics::damping_ratio(d, k, inertia.value);
-        message += fmt::format("; converted from the drive of '{}' (k = {} N·m/rad, d = {} N·m·s/rad, I = {}): "
-                               "naturalFrequency {} rad/s, dampingRatio {}",
-                               driver->name.text, format_number(k, 4), format_number(d, 4), inertia.describe(),
-                               format_number(new_nf, 4), format_number(new_dr, 3));
         std::vector<Edit> edits;
-        if (nf.span.valid()) edits.push_back(replace_value(nf, new_nf, 4));
-        if (dr.span.valid() && new_dr > 0) edits.push_back(replace_value(dr, new_dr, 3));
-        if (!edits.empty()) fix = Fix{"convert the drive gains to natural frequency and damping ratio", Applicability::Unsafe, std::move(edits)};
+        if (new_nf > bound) {
+          // Too stiff to resolve as a compliant constraint: the guide's starting point.
+          message += fmt::format("; converted from the drive of '{}' the natural frequency would be {} rad/s, above the "
+                                 "solver bound {}: make it a hard constraint (0 / 0), as the guide recommends to start",
+                                 driver->name.text, format_number(new_nf, 4), format_number(bound, 4));
+          if (nf.span.valid()) edits.push_back(replace_value(nf, 0.0));
+          if (dr.span.valid()) edits.push_back(replace_value(dr, 0.0));
+          if (!edits.empty()) fix = Fix{"make the mimic a hard constraint", Applicability::Unsafe, std::move(edits)};
+        } else {
+          message += fmt::format("; converted from the drive of '{}' (k = {} N·m/rad, d = {} N·m·s/rad, I = {}): "
+                                 "naturalFrequency {} rad/s, dampingRatio {}",
+                                 driver->name.text, format_number(k, 4), format_number(d, 4), inertia.describe(),
+                                 format_number(new_nf, 4), format_number(new_dr, 3));
+          if (nf.span.valid()) edits.push_back(replace_value(nf, new_nf, 4));
+          if (dr.span.valid() && new_dr > 0) edits.push_back(replace_value(dr, new_dr, 3));
+          if (!edits.empty())
+            fix = Fix{"convert the drive gains to natural frequency and damping ratio", Applicability::Unsafe, std::move(edits)};
+        }
       } else {
         message += "; start with a hard constraint (0 / 0), as the guide recommends";
       }

@@ -41,7 +41,9 @@ std::string render(const std::filesystem::path& file) {
   // drive gains for URDF), found as the CLI finds it.
   Settings settings;
   if (const auto config_path = config::discover(file); !config_path.empty()) {
-    const auto error = config::load(config_path.string(), settings);
+    // Named relative to fixtures/, like the fixture itself, whatever the working directory.
+    const auto shown = std::filesystem::relative(std::filesystem::absolute(config_path), test::fixtures_dir());
+    const auto error = config::load(config_path.string(), settings, shown.generic_string());
     INFO((error ? error->to_string() : std::string()));
     REQUIRE_FALSE(error);
   }

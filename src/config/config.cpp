@@ -147,6 +147,8 @@ class Loader {
         else if (k == "damping") drive.damping = non_negative(value, k);
         else if (k == "armature") drive.armature = non_negative(value, k);
         else if (k == "max_force") drive.max_force = non_negative(value, k);
+        else if (k == "rotor_inertia") drive.rotor_inertia = non_negative(value, k);
+        else if (k == "gear_ratio") drive.gear_ratio = positive(value, k);
         else if (k == "type") drive.type = Configured<std::string>{choice(value, k, {"force", "acceleration"}), origin(value)};
         else unknown(value, k, table_name);
       }
@@ -184,11 +186,11 @@ std::string ConfigError::to_string() const {
   return line ? fmt::format("{}:{}:{}: {}", path, line, column, message) : fmt::format("{}: {}", path, message);
 }
 
-std::optional<ConfigError> load(const std::string& path, Settings& settings) {
+std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path) {
   Settings updated = settings;
   try {
     toml::table root = toml::parse_file(path);
-    Loader(path, updated).load(root);
+    Loader(display_path.empty() ? path : display_path, updated).load(root);
   } catch (const toml::parse_error& error) {
     return ConfigError{path, static_cast<std::uint32_t>(error.source().begin.line),
                        static_cast<std::uint32_t>(error.source().begin.column), std::string(error.description())};

@@ -19,7 +19,8 @@ struct ConfigError {
 
 // Reads a configuration file into `settings` (on top of what it holds).
 // Unknown keys and bad values are errors; nothing is applied when there is one.
-std::optional<ConfigError> load(const std::string& path, Settings& settings);
+// Origins in messages name the file as `display_path` (default: `path`).
+std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path = "");
 
 // The nearest asset-lint.toml in the file's directory or an ancestor; empty if none.
 std::filesystem::path discover(const std::filesystem::path& file);

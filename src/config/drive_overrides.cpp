@@ -26,8 +26,13 @@ void apply_drive_settings(Asset& asset, const Settings& settings) {
     if (!drive.damping)
       drive.damping = configured(config.damping, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter);
     if (!drive.max_force) drive.max_force = configured(config.max_force, angular ? Unit::NewtonMeter : Unit::Newton);
-    if (config.type) drive.type = config.type->value == "acceleration" ? DriveType::Acceleration : DriveType::Force;
+    if (config.type && !drive.type_span.valid())
+      drive.type = config.type->value == "acceleration" ? DriveType::Acceleration : DriveType::Force;
     if (!joint.armature) joint.armature = configured(config.armature, angular ? Unit::KilogramMeter2 : Unit::Kilogram);
+    if (!joint.motor && config.rotor_inertia) {
+      joint.motor = Motor{Quantity::unauthored(config.rotor_inertia->value, Unit::KilogramMeter2),
+                          config.gear_ratio ? config.gear_ratio->value : 1.0, config.rotor_inertia->origin};
+    }
   }
 }
 

@@ -71,8 +71,8 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     }
   }
   for (auto& d : diagnostics) {
-    if (const RuleInfo* info = rules::find_rule(d.rule); info && d.severity == info->default_severity)
-      d.severity = settings.severity_for(d.rule, d.severity);
+    // `[rules.<id>] severity` sets every finding of the rule, whatever tier the rule chose.
+    d.severity = settings.severity_for(d.rule, d.severity);
   }
   apply_suppressions(result.asset.sources, diagnostics, settings);
   sort_diagnostics(diagnostics);

@@ -52,6 +52,8 @@ struct DriveSettings {
   std::optional<Configured<double>> damping;
   std::optional<Configured<double>> armature;
   std::optional<Configured<double>> max_force;
+  std::optional<Configured<double>> rotor_inertia;  // motor datasheet, kg·m²: justifies armature
+  std::optional<Configured<double>> gear_ratio;
   std::optional<Configured<std::string>> type;  // "force" or "acceleration"
   std::string origin;                            // the [drives.<joint>] table
 };

@@ -70,6 +70,14 @@ struct Mimic {
   std::string instance;    // USD: rotX / rotY / rotZ
 };
 
+// The motor behind a joint, when the asset or configuration names it: what justifies
+// an armature (reflected inertia G²·I_rotor).
+struct Motor {
+  Quantity rotor_inertia;  // kg·m²
+  double gear_ratio = 1.0;
+  std::string origin;      // where it was declared, for messages
+};
+
 struct Joint {
   Name name;
   Span span;               // the element or prim
@@ -90,6 +98,7 @@ struct Joint {
   OptQuantity joint_damping;   // URDF <dynamics damping>
   OptQuantity joint_friction;
   OptQuantity armature;    // kg·m² or kg
+  std::optional<Motor> motor;
   std::optional<Drive> drive;
   // Values of a drive schema that is authored but not applied (USD `delete apiSchemas`):
   // PhysX ignores them, but they show what someone meant, e.g. gains copied elsewhere.

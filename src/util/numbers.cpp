@@ -82,4 +82,12 @@ std::string format_number_at_least(double value, int significant) {
   return format_number(value, 17);
 }
 
+std::string format_number_at_most(double value, int significant) {
+  for (int digits = significant; digits < 17; ++digits) {
+    std::string text = format_number(value, digits);
+    if (auto back = parse_double(text); back && *back <= value + 1e-9 * std::fabs(value)) return text;
+  }
+  return format_number(value, 17);
+}
+
 }  // namespace assetlint

@@ -18,5 +18,7 @@ std::string_view trim(std::string_view text);
 std::string format_number(double value, int significant = 6);
 // Like format_number, but never below `value` (adds digits until the text reads back ≥ value).
 std::string format_number_at_least(double value, int significant = 6);
+// Like format_number, but never above `value`.
+std::string format_number_at_most(double value, int significant = 6);
 
 }  // namespace assetlint

@@ -297,6 +297,7 @@ class UrdfReader {
     Quantity armature = *rotor;
     armature.value = rotor->value * gear * gear;
     joint.armature = armature;
+    joint.motor = Motor{*rotor, gear, fmt::format("<drake:rotor_inertia> and <drake:gear_ratio> at line {}", rotor->span.line)};
   }
 
   // Runs urdfdom and places each of its complaints on the joint or link it names.

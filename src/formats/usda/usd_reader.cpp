@@ -293,8 +293,7 @@ class Reader {
     auto angular_instance = [&](const std::string& inst) { return inst == "angular" || inst.starts_with("rot"); };
 
     const double torque_scale = kpu_ * mpu_ * mpu_;  // stage mass·length² → kg·m²
-    for (const std::string& inst : instances) {
-      if (!prim.has_api_schema("PhysicsDriveAPI:" + inst)) continue;
+    auto read_drive = [&](const std::string& inst) {
       const bool angular = angular_instance(inst);
       const std::string ns = "drive:" + inst + ":physics:";
       Drive drive;
@@ -313,7 +312,21 @@ class Reader {
           drive.type_span = opinion->attribute->default_value->span;
         }
       }
-      joint.drive = std::move(drive);
+      return drive;
+    };
+    for (const std::string& inst : instances) {
+      if (!prim.has_api_schema("PhysicsDriveAPI:" + inst)) continue;
+      joint.drive = read_drive(inst);
+      break;
+    }
+    // Gains left behind by a removed drive schema: inactive, but evidence of what was
+    // copied where (mimic-copied-drive-gains).
+    for (const std::string& inst : instances) {
+      if (prim.has_api_schema("PhysicsDriveAPI:" + inst)) continue;
+      Drive stale = read_drive(inst);
+      if (!stale.stiffness && !stale.damping) continue;
+      if (!stale.span.valid()) stale.span = prim.span();
+      joint.inactive_drive = std::move(stale);
       break;
     }
 
