@@ -100,6 +100,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   bool statistics = false, exit_zero = false, quiet = false;
   std::string output_file;
   std::string config_path;
+  bool allow_outside_root = false;
   double timesteps = 0, iterations = 0;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   app.add_option("paths", paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
@@ -121,6 +122,9 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
       ->check(CLI::PositiveNumber);
   app.add_option("--position-iterations", iterations, "Solver position iterations, when the asset authors none")
       ->check(CLI::Range(1.0, 255.0));
+  app.add_flag("--allow-outside-root", allow_outside_root,
+               "Let USD composition read layers outside the checked tree (the directory named, or the working "
+               "directory)");
   app.add_flag("--fix", fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", diff, "Print a unified diff of what --fix would change; write nothing");
@@ -173,6 +177,10 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   if (app.count("--ignore")) overrides.ignore = ignore;
   if (app.count("--timesteps-per-second")) overrides.timesteps_per_second = timesteps;
   if (app.count("--position-iterations")) overrides.position_iterations = iterations;
+  overrides.allow_outside_root = allow_outside_root;
+  overrides.trees.push_back(std::filesystem::current_path().string());
+  for (const auto& path : paths)
+    if (std::filesystem::is_directory(path)) overrides.trees.push_back(path);
   config::SettingsResolver resolver(overrides, config_path.empty() ? std::nullopt : std::optional(config_path));
 
   const bool use_color = color == "always" || (color == "auto" && out_is_terminal && output_file.empty() &&
@@ -222,6 +230,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
     io_error = true;
   }
   std::vector<FileReport> reports = lint_files(expansion.files, resolver.as_function(), jobs);
+  drop_repeated_findings(reports);
   std::erase_if(reports, [&](const FileReport& report) {
     if (!report.error) return false;
     err << "asset-lint: error: " << *report.error << "\n";

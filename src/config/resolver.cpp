@@ -16,6 +16,8 @@ const Settings& SettingsResolver::load(const std::string& config_path, std::opti
     settings->simulation.timesteps_per_second = Configured<double>{*overrides_.timesteps_per_second, "--timesteps-per-second"};
   if (overrides_.position_iterations)
     settings->simulation.position_iterations = Configured<double>{*overrides_.position_iterations, "--position-iterations"};
+  settings->trees = overrides_.trees;
+  settings->allow_outside_root = overrides_.allow_outside_root;
   return *by_config_.emplace(config_path, std::move(settings)).first->second;
 }
 

@@ -20,6 +20,8 @@ struct CommandLineOverrides {
   std::optional<std::vector<std::string>> ignore;
   std::optional<double> timesteps_per_second;
   std::optional<double> position_iterations;
+  std::vector<std::string> trees;  // directories named on the command line, and the working directory
+  bool allow_outside_root = false;
 };
 
 class SettingsResolver {

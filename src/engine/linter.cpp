@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <set>
+#include <tuple>
 #include <thread>
 
 #include "config/drive_overrides.h"
@@ -23,10 +25,27 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
-ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem& files) {
+// The deepest named tree that holds the file; empty (its own directory) when none does.
+std::string tree_of(const std::string& path, const std::vector<std::string>& trees) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  std::string best;
+  for (const auto& tree : trees) {
+    const fs::path root = fs::weakly_canonical(fs::absolute(tree, ec), ec);
+    const auto [root_end, file_it] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
+    if (root_end == root.end() && root.string().size() > best.size()) best = root.string();
+  }
+  return best;
+}
+
+ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem& files,
+                const Settings& settings) {
   switch (file_kind(path)) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
-    case FileKind::Usda: return usda::read_usda(std::move(file), files);
+    case FileKind::Usda:
+      return usda::read_usda(std::move(file), files,
+                             usda::ComposeOptions{tree_of(path, settings.trees), settings.allow_outside_root});
     default: break;
   }
   ReadResult unsupported;
@@ -58,7 +77,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
-  ReadResult result = read(path, std::move(file), files);
+  ReadResult result = read(path, std::move(file), files, settings);
   std::vector<Diagnostic> diagnostics;
   for (auto& d : result.diagnostics)
     if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
@@ -109,6 +128,17 @@ std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const 
   worker();
   for (auto& t : threads) t.join();
   return reports;
+}
+
+void drop_repeated_findings(std::vector<FileReport>& reports) {
+  std::set<std::tuple<std::string, std::size_t, std::string, std::string>> seen;
+  for (auto& report : reports) {
+    std::erase_if(report.diagnostics, [&](const Diagnostic& d) {
+      const std::string& layer = d.span.file < report.sources.size() ? report.source(d.span.file).path() : report.path;
+      const auto canonical = std::filesystem::weakly_canonical(layer).string();
+      return !seen.emplace(canonical, d.span.offset, d.rule, d.message).second;
+    });
+  }
 }
 
 PathExpansion expand_paths(const std::vector<std::string>& paths) {

@@ -38,6 +38,11 @@ std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const 
 using SettingsFor = std::function<const Settings&(const std::string& path)>;
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const SettingsFor& settings, unsigned jobs);
 
+// A layer shared by several checked USD files (a physics layer and the configuration
+// layer that sublayers it) yields the same finding once per file that composes it:
+// keeps the first, drops the repeats (same layer, position, rule and message).
+void drop_repeated_findings(std::vector<FileReport>& reports);
+
 // Files to check for the given paths: files as given, directories searched
 // recursively for *.urdf and *.usda (hidden directories skipped), sorted.
 struct PathExpansion {

@@ -73,6 +73,10 @@ struct Settings {
   GripperSpec gripper;
   std::map<std::string, DriveSettings, std::less<>> drives;
   std::string config_path;  // the asset-lint.toml in effect; empty when none
+  // The directory trees the user named: composed USD layers are read only inside the
+  // one that holds the checked file (its own directory when none does).
+  std::vector<std::string> trees;
+  bool allow_outside_root = false;
   std::map<std::string, Severity, std::less<>> severity_overrides;
   std::map<std::string, std::map<std::string, double, std::less<>>, std::less<>> rule_options;
 
