@@ -72,7 +72,7 @@ class DriveNaturalFrequency final : public Rule {
               "kg·m² (natural frequency {}× the rate) or simulate at ≥ {} Hz",
               describe(*force), format_number(settings.gripper.target_delta_deg.value),
               describe_gain(drive.stiffness, k_force, k_unit), format_number(nf_force, 4), format_number(armature, 3),
-              format_number(factor), format_number(std::ceil(nf_force / rate.position_iterations), 4));
+              format_number(factor), format_number(std::ceil(nf_force / factor), 4));
           out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
           continue;
         }
@@ -83,7 +83,19 @@ class DriveNaturalFrequency final : public Rule {
       if (!proposed) {
         // No force bound to keep: the stiffness for a natural frequency at the warning threshold.
         proposed = physics::stiffness_for_frequency(warn, inertia);
-        reason = fmt::format("natural frequency {}× the rate; no max force to keep", format_number(factor));
+        reason = fmt::format("natural frequency {}× the rate{}", format_number(factor),
+                             force_known ? "" : "; no max force to keep");
+      }
+      if (*proposed >= driven->stiffness * (1 - 1e-6)) {
+        // The guide's stiffness is not lower than what the file has: stiffness is not the
+        // lever here (and a fix must never stiffen a drive).
+        const double armature = driven->stiffness / (warn * warn) - inertia;
+        message += fmt::format("; the guide's stiffness ({}) is not lower: add armature ≥ {} kg·m² (natural frequency "
+                               "{}× the rate) or simulate at ≥ {} Hz",
+                               describe_gain(drive.stiffness, *proposed, k_unit), format_number(armature, 3),
+                               format_number(factor), format_number(std::ceil(nf / factor), 4));
+        out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
+        continue;
       }
       const double damping = physics::damping_for_ratio(1.0, *proposed, inertia);
       message += fmt::format("; stiffness {} → {} ({}), damping → {} for damping ratio 1 (natural frequency {} rad/s)",
