@@ -28,13 +28,16 @@ std::string extension_of(const std::string& path) {
 // The deepest named tree that holds the file; empty (its own directory) when none does.
 std::string tree_of(const std::string& path, const std::vector<std::string>& trees) {
   namespace fs = std::filesystem;
+  // Lexical paths, like the composer's own check: a tree named through a symlink keeps
+  // the files found through that symlink inside it.
   std::error_code ec;
-  const fs::path file = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  const fs::path file = fs::absolute(path, ec).lexically_normal();
   std::string best;
   for (const auto& tree : trees) {
-    const fs::path root = fs::weakly_canonical(fs::absolute(tree, ec), ec);
-    const auto [root_end, file_it] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
-    if (root_end == root.end() && root.string().size() > best.size()) best = root.string();
+    const fs::path root = fs::absolute(tree, ec).lexically_normal();
+    const fs::path relative = file.lexically_relative(root);
+    const bool inside = !relative.empty() && *relative.begin() != "..";
+    if (inside && root.string().size() > best.size()) best = root.string();
   }
   return best;
 }
