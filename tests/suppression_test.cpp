@@ -247,3 +247,40 @@ TEST_CASE("suppress: per-file-ignores in asset-lint.toml", "[suppress]") {
   write_file(dir.path() / "asset-lint.toml", "per-file-ignores = [\"x\"]\n");
   CHECK(run_cli({"assets"}, dir.path()).exit_code == 2);
 }
+
+TEST_CASE("suppress: the scanners survive truncated and odd input", "[suppress]") {
+  const std::vector<std::pair<std::filesystem::path, CommentSyntax>> inputs = {
+      {test::fixtures_dir() / "suppressions" / "element.urdf", CommentSyntax::Xml},
+      {test::fixtures_dir() / "suppressions" / "prim_and_attribute.usda", CommentSyntax::Usda},
+  };
+  for (const auto& [path, syntax] : inputs) {
+    const std::string text = read_file(path);
+    // Every prefix: unterminated comments, strings, tags and prims.
+    for (std::size_t n = 0; n <= text.size(); ++n) {
+      const std::string_view prefix(text.data(), n);
+      for (const auto& s : find_suppressions(prefix, syntax)) {
+        INFO(path.filename().string() << " cut at " << n);
+        CHECK(s.begin <= s.end);
+        CHECK(s.end <= n);
+        CHECK(s.comment_offset + s.comment_length <= n);
+      }
+    }
+  }
+  // CDATA, DOCTYPE with an internal subset, processing instructions.
+  const std::string xml =
+      "<?xml version=\"1.0\"?><!DOCTYPE robot [<!ENTITY x \"<!-- asset-lint: ignore[a] -->\">]>\n"
+      "<robot><![CDATA[<!-- asset-lint: ignore[b] -->]]>\n"
+      "<!-- asset-lint: ignore[c] --><?pi x?><link/></robot>";
+  const auto found = find_suppressions(xml, CommentSyntax::Xml);
+  REQUIRE(found.size() == 1);
+  CHECK(found[0].patterns == std::vector<std::string>{"c"});
+  CHECK(xml.substr(found[0].begin, found[0].end - found[0].begin) == "<link/>");
+  // over and class prims, and a block comment directive.
+  const std::string usda =
+      "#usda 1.0\n/* asset-lint: ignore[a] */\nover \"x\" {\n  float y = 1\n}\n# asset-lint: ignore[b]\nclass \"c\" {\n}\n";
+  const auto usd = find_suppressions(usda, CommentSyntax::Usda);
+  REQUIRE(usd.size() == 2);
+  CHECK(usd[0].target == "prim");
+  CHECK(usda.substr(usd[0].begin, usd[0].end - usd[0].begin) == "over \"x\" {\n  float y = 1\n}");
+  CHECK(usda.substr(usd[1].begin, usd[1].end - usd[1].begin) == "class \"c\" {\n}");
+}
