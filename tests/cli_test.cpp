@@ -126,3 +126,29 @@ TEST_CASE("cli: directories are searched recursively in a stable order", "[cli]"
   CHECK(r.out.find("skip.urdf") == std::string::npos);
   CHECK(r.out.find("in 3 files.") != std::string::npos);
 }
+
+TEST_CASE("cli: asset-lint.toml is found above the file; flags override it; bad keys exit 2", "[cli]") {
+  assetlint::test::TempDir dir;
+  std::filesystem::create_directories(dir.path() / "robots");
+  const std::string gripper = assetlint::test::read_file(assetlint::test::source_dir() / kClean);
+  assetlint::test::write_file(dir.path() / "robots" / "gripper.urdf", gripper);
+  assetlint::test::write_file(dir.path() / "asset-lint.toml",
+                              "select = [\"drive-natural-frequency\"]\n\n[drives.finger_joint]\nstiffness = 5700\n"
+                              "damping = 0.1\n");
+  auto flags = run_cli({"--timesteps-per-second", "250", "--position-iterations", "64", "robots/gripper.urdf"},
+                       dir.path());
+  CHECK(flags.exit_code == 1);
+  CHECK(flags.out.find("exceeds 250 Hz (--timesteps-per-second) × 64 position iterations (--position-iterations) = "
+                       "16000") != std::string::npos);
+  CHECK(flags.out.find("stiffness 5700 N·m/rad → 275 N·m/rad") != std::string::npos);
+  // Without flags: PhysX's defaults, 60 Hz × 32.
+  auto defaults = run_cli({"robots/gripper.urdf"}, dir.path());
+  CHECK(defaults.out.find("exceeds 60 Hz (PhysX default) × 32 position iterations (PhysX default) = 1920") !=
+        std::string::npos);
+  CHECK(run_cli({"--position-iterations", "32.5", "robots/gripper.urdf"}, dir.path()).exit_code == 2);
+
+  assetlint::test::write_file(dir.path() / "asset-lint.toml", "[simulation]\ntimestep = 250\n");
+  auto bad = run_cli({"robots/gripper.urdf"}, dir.path());
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err == "asset-lint: error: asset-lint.toml:2:1: unknown key 'timestep' in [simulation]\n");
+}

@@ -101,7 +101,8 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   std::string output_file;
   std::string config_path;
   bool allow_outside_root = false;
-  double timesteps = 0, iterations = 0;
+  double timesteps = 0;
+  unsigned iterations = 0;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   app.add_option("paths", paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
   app.add_option("--select", select, "Only these rules (comma list, globs such as 'mimic-*')")
@@ -121,7 +122,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   app.add_option("--timesteps-per-second", timesteps, "Simulation rate, when the asset's stage authors none")
       ->check(CLI::PositiveNumber);
   app.add_option("--position-iterations", iterations, "Solver position iterations, when the asset authors none")
-      ->check(CLI::Range(1.0, 255.0));
+      ->check(CLI::Range(1u, 255u));
   app.add_flag("--allow-outside-root", allow_outside_root,
                "Let USD composition read layers outside the checked tree (the directory named, or the working "
                "directory)");
@@ -176,7 +177,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   if (app.count("--select")) overrides.select = select;
   if (app.count("--ignore")) overrides.ignore = ignore;
   if (app.count("--timesteps-per-second")) overrides.timesteps_per_second = timesteps;
-  if (app.count("--position-iterations")) overrides.position_iterations = iterations;
+  if (app.count("--position-iterations")) overrides.position_iterations = static_cast<double>(iterations);
   overrides.allow_outside_root = allow_outside_root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : paths)

@@ -29,7 +29,7 @@ class Loader {
       else if (name == "gripper") gripper(table(node, name));
       else if (name == "drives") drives(table(node, name));
       else if (name == "rules") rules(table(node, name));
-      else unknown(node, name, "");
+      else unknown(key, "");
     }
   }
 
@@ -40,9 +40,10 @@ class Loader {
 
   [[noreturn]] void fail(const toml::node& node, std::string message) const { throw Invalid{node.source(), std::move(message)}; }
 
-  [[noreturn]] void unknown(const toml::node& node, std::string_view key, std::string_view table_name) const {
-    fail(node, table_name.empty() ? fmt::format("unknown key '{}'", key)
-                                  : fmt::format("unknown key '{}' in [{}]", key, table_name));
+  // Points at the key itself, not its value.
+  [[noreturn]] void unknown(const toml::key& key, std::string_view table_name) const {
+    throw Invalid{key.source(), table_name.empty() ? fmt::format("unknown key '{}'", key.str())
+                                                   : fmt::format("unknown key '{}' in [{}]", key.str(), table_name)};
   }
 
   const toml::table& table(const toml::node& node, std::string_view name) const {
@@ -116,7 +117,7 @@ class Loader {
         if (n != std::floor(n) || n > 255) fail(node, "'position_iterations' must be a whole number from 1 to 255");
         settings_.simulation.position_iterations = Configured<double>{n, origin(node)};
       } else if (k == "solver") settings_.simulation.solver = Configured<std::string>{choice(node, k, {"TGS", "PGS"}), origin(node)};
-      else unknown(node, k, "simulation");
+      else unknown(key, "simulation");
     }
   }
 
@@ -132,7 +133,7 @@ class Loader {
       else if (k == "stroke_m") g.stroke_m = positive(node, k);
       else if (k == "target_delta_deg") g.target_delta_deg = *positive(node, k);
       else if (k == "driven_joint") g.driven_joint = Configured<std::string>{string(node, k), origin(node)};
-      else unknown(node, k, "gripper");
+      else unknown(key, "gripper");
     }
   }
 
@@ -150,7 +151,7 @@ class Loader {
         else if (k == "rotor_inertia") drive.rotor_inertia = non_negative(value, k);
         else if (k == "gear_ratio") drive.gear_ratio = positive(value, k);
         else if (k == "type") drive.type = Configured<std::string>{choice(value, k, {"force", "acceleration"}), origin(value)};
-        else unknown(value, k, table_name);
+        else unknown(key, table_name);
       }
       settings_.drives[std::string(joint.str())] = std::move(drive);
     }
@@ -170,7 +171,7 @@ class Loader {
         }
         bool known = false;
         for (const auto& option : rule->options) known = known || option.name == k;
-        if (!known) unknown(value, k, table_name);
+        if (!known) unknown(key, table_name);
         settings_.rule_options[std::string(rule->id)][std::string(k)] = number(value, k, -INFINITY, false);
       }
     }
