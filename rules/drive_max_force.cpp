@@ -69,7 +69,7 @@ class DriveMaxForce final : public Rule {
                                                    describe(required->required, q.unit), required->derivation));
     if (q.span.valid())
       d.fix = Fix{"raise the max force to the payload spec's", Applicability::Unsafe,
-                  {Edit{q.span.file, q.span.offset, q.span.length, format_number_at_least(q.authored_for(required->required), 3)}}};
+                  {Edit{q.span.file, q.span.offset, q.span.length, format_number_rounded_up(q.authored_for(required->required), 3)}}};
   }
 
   RuleInfo info_{"drive-max-force",

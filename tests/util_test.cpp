@@ -28,6 +28,16 @@ TEST_CASE("format_number writes the shortest text at the requested precision", "
   CHECK(format_number(41127.3, 3) == "41100");
 }
 
+TEST_CASE("rounded-up and bounded formatting", "[util]") {
+  CHECK(format_number_rounded_up(13.333333, 3) == "13.4");
+  CHECK(format_number_rounded_up(20.000000000000004, 3) == "20");
+  CHECK(format_number_rounded_up(6.6667, 3) == "6.67");
+  CHECK(format_number_rounded_up(0.08333, 2) == "0.084");
+  CHECK(format_number_at_least(3.57689069, 6) == "3.576891");
+  CHECK(format_number_at_most(4.8530, 4) == "4.853");
+  CHECK(format_number_at_most(0.08470001, 3) == "0.0847");
+}
+
 TEST_CASE("parse_double accepts whole numbers only", "[util]") {
   CHECK(parse_double("47") == 47.0);
   CHECK(parse_double("+1.5e-3") == 0.0015);

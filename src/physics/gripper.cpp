@@ -48,7 +48,7 @@ std::optional<RequiredVelocity> required_velocity(const Settings& settings, cons
   v.derivation = fmt::format("{} m stroke / 2 per finger at {} m/s closes in {} s; {} {} range / {} s = {} {}/s",
                              format_number(g.stroke_m->value), format_number(g.finger_speed_m_s->value),
                              format_number(v.close_time, 3), format_number(range, 4), unit,
-                             format_number(v.close_time, 3), format_number(v.velocity, 3), unit);
+                             format_number(v.close_time, 3), format_number(v.velocity, 4), unit);
   return v;
 }
 

@@ -82,6 +82,14 @@ std::string format_number_at_least(double value, int significant) {
   return format_number(value, 17);
 }
 
+std::string format_number_rounded_up(double value, int significant) {
+  if (value <= 0 || !std::isfinite(value)) return format_number(value, significant);
+  const double step = std::pow(10.0, std::floor(std::log10(value)) - significant + 1);
+  // Values already on a step (20.000000000000004) stay where they are.
+  const double up = std::ceil(value / step - 1e-9) * step;
+  return format_number(up, significant);
+}
+
 std::string format_number_at_most(double value, int significant) {
   for (int digits = significant; digits < 17; ++digits) {
     std::string text = format_number(value, digits);

@@ -18,6 +18,9 @@ std::string_view trim(std::string_view text);
 std::string format_number(double value, int significant = 6);
 // Like format_number, but never below `value` (adds digits until the text reads back ≥ value).
 std::string format_number_at_least(double value, int significant = 6);
+// `value` rounded up at `significant` digits (13.333 → "13.4" at 3): a bound that must
+// not be undercut, written the way a person would.
+std::string format_number_rounded_up(double value, int significant);
 // Like format_number, but never above `value`.
 std::string format_number_at_most(double value, int significant = 6);
 
