@@ -52,12 +52,6 @@ std::string path_of(const Stage& stage, const char* prim, const char* attr) {
   return stage.sources.at(a->file)->path();
 }
 
-std::vector<std::string> rules_of(const Stage& stage) {
-  std::vector<std::string> out;
-  for (const auto& d : stage.diagnostics) out.push_back(d.rule);
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("compose: sublayers are weaker than the layer, earlier sublayers stronger", "[usd][compose]") {
