@@ -76,23 +76,22 @@ std::string EffectiveInertia::describe() const {
 
 SimulationRate effective_simulation(const Asset& asset, const Settings& settings) {
   SimulationRate rate;
-  const auto at = [&](const Quantity& q) {
-    return q.span.valid() ? fmt::format("{}:{}", asset.source(q.span.file).path(), q.span.line) : std::string("stage default");
+  // The stage's own value wins, then configuration; the defaults stay otherwise.
+  const auto pick = [&](const OptQuantity& stage, const std::optional<Configured<double>>& configured, double& value,
+                        std::string& origin) {
+    if (stage) {
+      value = stage->value;
+      origin = stage->span.valid() ? fmt::format("{}:{}", asset.source(stage->span.file).path(), stage->span.line)
+                                   : std::string("stage default");
+    } else if (configured) {
+      value = configured->value;
+      origin = configured->origin;
+    }
   };
-  if (asset.scene.timesteps_per_second) {
-    rate.timesteps_per_second = asset.scene.timesteps_per_second->value;
-    rate.rate_origin = at(*asset.scene.timesteps_per_second);
-  } else if (settings.simulation.timesteps_per_second) {
-    rate.timesteps_per_second = settings.simulation.timesteps_per_second->value;
-    rate.rate_origin = settings.simulation.timesteps_per_second->origin;
-  }
-  if (asset.scene.position_iterations) {
-    rate.position_iterations = asset.scene.position_iterations->value;
-    rate.iterations_origin = at(*asset.scene.position_iterations);
-  } else if (settings.simulation.position_iterations) {
-    rate.position_iterations = settings.simulation.position_iterations->value;
-    rate.iterations_origin = settings.simulation.position_iterations->origin;
-  }
+  pick(asset.scene.timesteps_per_second, settings.simulation.timesteps_per_second, rate.timesteps_per_second,
+       rate.rate_origin);
+  pick(asset.scene.position_iterations, settings.simulation.position_iterations, rate.position_iterations,
+       rate.iterations_origin);
   if (!asset.scene.solver.empty()) rate.solver = asset.scene.solver;
   else if (settings.simulation.solver) rate.solver = settings.simulation.solver->value;
   return rate;
