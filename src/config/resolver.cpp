@@ -29,7 +29,7 @@ std::optional<ConfigError> SettingsResolver::prepare(const std::vector<std::stri
     return error;
   }
   for (const auto& file : files) {
-    load(discover(file).string(), error);
+    by_file_[file] = &load(discover(file).string(), error);
     if (error) return error;
   }
   if (files.empty()) load("", error);
@@ -38,6 +38,7 @@ std::optional<ConfigError> SettingsResolver::prepare(const std::vector<std::stri
 
 const Settings& SettingsResolver::for_file(const std::string& path) {
   std::lock_guard lock(mutex_);
+  if (auto it = by_file_.find(path); it != by_file_.end()) return *it->second;
   std::optional<ConfigError> ignored;  // prepare() reported it
   return load(explicit_config_ ? *explicit_config_ : discover(path).string(), ignored);
 }

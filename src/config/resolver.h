@@ -42,6 +42,7 @@ class SettingsResolver {
   std::optional<std::string> explicit_config_;
   std::mutex mutex_;
   std::map<std::string, std::unique_ptr<Settings>> by_config_;  // "" = no configuration file
+  std::map<std::string, const Settings*> by_file_;  // found by prepare(): no second directory walk
 };
 
 }  // namespace assetlint::config
