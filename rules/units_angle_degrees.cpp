@@ -30,13 +30,13 @@ class UnitsAngleDegrees final : public Rule {
       if (radian_like(lower.value, pi_tolerance) && radian_like(upper.value, pi_tolerance)) continue;
       const double lower_rad = radians_from_degrees(lower.authored);
       const double upper_rad = radians_from_degrees(upper.authored);
-      Diagnostic& d = out.report(
-          largest == std::fabs(upper.value) ? upper.span : lower.span,
-          fmt::format("limits [{}, {}] of {} look like degrees: {} rad is {} turns (threshold {} rad); read as "
-                      "degrees they are [{}, {}] rad",
-                      format_number(lower.authored), format_number(upper.authored), joint_label(joint),
-                      format_number(largest, 4), format_number(largest / (2 * std::numbers::pi), 3),
-                      format_number(min_magnitude, 4), format_number(lower_rad), format_number(upper_rad)));
+      Diagnostic& d = out.report(largest == std::fabs(upper.value) ? upper.span : lower.span,
+                                 fmt::format("limits [{}, {}] of {} look like degrees", format_number(lower.authored),
+                                             format_number(upper.authored), joint_label(joint)));
+      d.note(fmt::format("URDF limits are radians: {} rad is {} turns, beyond the {} rad threshold (option "
+                         "min_magnitude_rad)",
+                         format_number(largest, 4), format_number(largest / (2 * std::numbers::pi), 3),
+                         format_number(min_magnitude, 4)));
       // Convert only the limits that look like degrees themselves: whole numbers or
       // beyond the threshold. `upper="0.8757"` next to `lower="-46"` is already radians, and
       // 0 is 0 in both units.
@@ -46,7 +46,9 @@ class UnitsAngleDegrees final : public Rule {
                                  (limit->value == std::round(limit->value) || std::fabs(limit->value) > min_magnitude);
         if (limit->span.valid() && degree_like) edits.push_back(replace_value(*limit, radians_from_degrees(limit->authored)));
       }
-      d.fix = Fix{"convert the limits from degrees to radians", Applicability::Unsafe, std::move(edits)};
+      d.fix = Fix{fmt::format("read the limits as degrees and write them in radians: [{}, {}]", format_number(lower_rad),
+                              format_number(upper_rad)),
+                  Applicability::Unsafe, std::move(edits)};
     }
   }
 

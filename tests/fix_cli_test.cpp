@@ -54,8 +54,10 @@ TEST_CASE("cli: --fix alone leaves unsafe fixes and reports them (exit 1)", "[fi
   CHECK(r.exit_code == 1);
   CHECK(r.err.empty());
   CHECK(r.out ==
-        "robot.urdf:30:29: error: limits [0, 47] of revolute joint 'finger_joint' look like degrees: 47 rad is 7.48 "
-        "turns (threshold 12.57 rad); read as degrees they are [0, 0.820305] rad [units-angle-degrees] (unsafe fix)\n"
+        "robot.urdf:30:29: error: limits [0, 47] of revolute joint 'finger_joint' look like degrees [units-angle-degrees] "
+        "(unsafe fix)\n"
+        "  note: URDF limits are radians: 47 rad is 7.48 turns, beyond the 12.57 rad threshold (option min_magnitude_rad)\n"
+        "  help: unsafe fix: read the limits as degrees and write them in radians: [0, 0.820305]\n"
         "Found 1 problem (1 error, 0 warnings, 0 infos) in 1 file. 0 fixable with --fix (1 more with "
         "--unsafe-fixes).\n");
   CHECK(read_file(file) == original);

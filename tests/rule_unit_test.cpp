@@ -121,11 +121,13 @@ TEST_CASE("units-angle-degrees: the guide's upper=\"47\" and its fix to 0.820305
   CHECK(d.span.column == 29);
   CHECK(d.span.offset == offset_of(text, R"(upper="47")", "47"));
   CHECK(d.span.length == 2);
-  CHECK(d.message ==
-        "limits [0, 47] of revolute joint 'finger_joint' look like degrees: 47 rad is 7.48 turns (threshold 12.57 rad); "
-        "read as degrees they are [0, 0.820305] rad");
+  CHECK(d.message == "limits [0, 47] of revolute joint 'finger_joint' look like degrees");
+  REQUIRE(d.notes.size() == 1);
+  CHECK(d.notes[0].message ==
+        "URDF limits are radians: 47 rad is 7.48 turns, beyond the 12.57 rad threshold (option min_magnitude_rad)");
+  CHECK_FALSE(d.notes[0].span.valid());
   REQUIRE(d.fix);
-  CHECK(d.fix->title == "convert the limits from degrees to radians");
+  CHECK(d.fix->title == "read the limits as degrees and write them in radians: [0, 0.820305]");
   CHECK(d.fix->applicability == Applicability::Unsafe);
   // 0 is 0 in both units: only the degree-looking limit is rewritten.
   REQUIRE(d.fix->edits.size() == 1);
@@ -148,9 +150,11 @@ TEST_CASE("units-angle-degrees: positions and edit offsets with a UTF-8 BOM and 
   // A tie in magnitude points at upper; the column counts neither the BOM nor the '\r'.
   CHECK(d.span.line == 27);
   CHECK(d.span.column == 31);
-  CHECK(d.message ==
-        "limits [-90, 90] of revolute joint 'finger_joint' look like degrees: 90 rad is 14.3 turns (threshold 12.57 "
-        "rad); read as degrees they are [-1.5708, 1.5708] rad");
+  CHECK(d.message == "limits [-90, 90] of revolute joint 'finger_joint' look like degrees");
+  REQUIRE(d.notes.size() == 1);
+  CHECK(d.notes[0].message ==
+        "URDF limits are radians: 90 rad is 14.3 turns, beyond the 12.57 rad threshold (option min_magnitude_rad)");
+  CHECK(d.fix->title == "read the limits as degrees and write them in radians: [-1.5708, 1.5708]");
   REQUIRE(d.fix);
   REQUIRE(d.fix->edits.size() == 2);
   // Byte offsets include the BOM and every '\r' before the literal.
@@ -186,9 +190,9 @@ TEST_CASE("units-angle-degrees: the min_magnitude_rad option lowers the threshol
   REQUIRE(report.diagnostics.size() == 1);
   const Diagnostic& d = report.diagnostics[0];
   CHECK(d.rule == "units-angle-degrees");
-  CHECK(d.message ==
-        "limits [0, 1.5] of revolute joint 'finger_joint' look like degrees: 1.5 rad is 0.239 turns (threshold 1 "
-        "rad); read as degrees they are [0, 0.0261799] rad");
+  CHECK(d.message == "limits [0, 1.5] of revolute joint 'finger_joint' look like degrees");
+  CHECK(d.notes.at(0).message ==
+        "URDF limits are radians: 1.5 rad is 0.239 turns, beyond the 1 rad threshold (option min_magnitude_rad)");
   REQUIRE(d.fix);
   REQUIRE(d.fix->edits.size() == 1);
   CHECK(d.fix->edits[0].replacement == "0.0261799");

@@ -27,4 +27,14 @@ std::string_view applicability_name(Applicability applicability) {
   return "display";
 }
 
+Diagnostic& Diagnostic::note(std::string text) {
+  notes.push_back(Note{std::move(text), Span{}});
+  return *this;
+}
+
+Diagnostic& Diagnostic::note(const Span& at, std::string text) {
+  notes.push_back(Note{std::move(text), at});
+  return *this;
+}
+
 }  // namespace assetlint

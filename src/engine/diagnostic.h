@@ -31,12 +31,28 @@ struct Fix {
   std::vector<Edit> edits;
 };
 
+// A sentence under a finding: an input, a threshold, a step of the derivation. It may
+// point at another place (the followed joint, the configuration line, the lighter link).
+struct Note {
+  std::string message;
+  Span span;  // invalid when the note has no place of its own
+};
+
+// A finding: a short primary message (what is wrong, where, the key number; at most
+// kMaxPrimaryMessage characters), the notes with the numbers behind it, and the fix,
+// whose title says what it writes.
 struct Diagnostic {
   std::string rule;
   Severity severity = Severity::Warning;
   Span span;
   std::string message;
   std::optional<Fix> fix;
+  std::vector<Note> notes;
+
+  Diagnostic& note(std::string text);
+  Diagnostic& note(const Span& at, std::string text);
 };
+
+inline constexpr std::size_t kMaxPrimaryMessage = 120;
 
 }  // namespace assetlint

@@ -522,7 +522,7 @@ void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& so
     const Span span = source.span(f.file, c.comment_offset, c.comment_length);
     const Severity severity = settings.severity_for(unused_id, rules::kUnusedSuppression.default_severity);
     if (c.problem) {
-      unused.push_back(Diagnostic{std::string(unused_id), severity, span, *c.problem, std::nullopt});
+      unused.push_back(Diagnostic{std::string(unused_id), severity, span, *c.problem, std::nullopt, {}});
       continue;
     }
     std::vector<std::string> unknown, idle, kept;
@@ -553,7 +553,7 @@ void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& so
       message += fmt::format("{}unused suppression of {}: no such finding {}", message.empty() ? "" : "; ",
                              quote_list(idle), where);
     }
-    Diagnostic d{std::string(unused_id), severity, span, std::move(message), std::nullopt};
+    Diagnostic d{std::string(unused_id), severity, span, std::move(message), std::nullopt, {}};
     const Applicability applicability = unknown.empty() ? Applicability::Safe : Applicability::Unsafe;
     if (kept.empty()) {
       d.fix = Fix{"remove the suppression comment", applicability,

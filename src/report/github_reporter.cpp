@@ -30,6 +30,16 @@ std::string github_escape_property(std::string_view text) {
   return out;
 }
 
+namespace {
+
+// GitHub shows an annotation's message on several lines: the notes follow the primary line.
+std::string with_notes(const FileReport& report, const Diagnostic& d) {
+  const std::string notes = notes_text(report, d);
+  return notes.empty() ? d.message : d.message + "\n" + notes;
+}
+
+}  // namespace
+
 void write_github(std::ostream& out, const std::vector<FileReport>& reports) {
   for (const auto& report : reports) {
     for (const auto& d : report.diagnostics) {
@@ -38,7 +48,7 @@ void write_github(std::ostream& out, const std::vector<FileReport>& reports) {
       out << fmt::format("::{} file={},line={},col={},endLine={},endColumn={},title={}::{}\n", command,
                          github_escape_property(diagnostic_path(report, d)), d.span.line, d.span.column, end.line,
                          end.column, github_escape_property(fmt::format("asset-lint ({})", d.rule)),
-                         github_escape_data(d.message));
+                         github_escape_data(with_notes(report, d)));
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/report_util.h"
 #include "report/summary.h"
 
 namespace assetlint {
@@ -21,6 +22,18 @@ void write_json(std::ostream& out, const std::vector<FileReport>& reports) {
       item["rule"] = d.rule;
       item["severity"] = severity_name(d.severity);
       item["message"] = d.message;
+      // v1 added `notes` (each with an optional location); the fields above are unchanged.
+      ordered_json notes = ordered_json::array();
+      for (const Note& note : d.notes) {
+        ordered_json entry{{"message", note.message}};
+        if (note.span.valid()) {
+          entry["file"] = note_path(report, note);
+          entry["line"] = note.span.line;
+          entry["column"] = note.span.column;
+        }
+        notes.push_back(std::move(entry));
+      }
+      item["notes"] = std::move(notes);
       if (d.fix) {
         ordered_json edits = ordered_json::array();
         for (const auto& e : d.fix->edits) {

@@ -77,8 +77,10 @@ void write_junit(std::ostream& out, const std::vector<FileReport>& reports, cons
         const std::string& where = diagnostic_path(report, *d);
         const std::string location = where == report.path ? fmt::format("{}:{}", d->span.line, d->span.column)
                                                            : fmt::format("{}:{}:{}", where, d->span.line, d->span.column);
+        const std::string notes = notes_text(report, *d);
+        const std::string body = notes.empty() ? d->message : d->message + "\n" + notes;
         out << fmt::format("      <failure message=\"{}\" type=\"{}\">{} {}</failure>\n", xml_escape(d->message),
-                           severity_name(d->severity), xml_escape(location), xml_escape(d->message));
+                           severity_name(d->severity), xml_escape(location), xml_escape(body));
       }
       out << "    </testcase>\n";
     }

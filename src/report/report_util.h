@@ -11,4 +11,16 @@ inline const std::string& diagnostic_path(const FileReport& report, const Diagno
   return d.span.file < report.sources.size() ? report.source(d.span.file).path() : report.path;
 }
 
+// The path of the file a note points at.
+inline const std::string& note_path(const FileReport& report, const Note& note) {
+  return note.span.file < report.sources.size() ? report.source(note.span.file).path() : report.path;
+}
+
+// "fix: set stiffness …", "unsafe fix: …" or "suggestion: …": what the fix writes and
+// how far it is trusted.
+std::string help_line(const Fix& fix);
+
+// The finding's notes and help as plain lines, for formats that carry one text body.
+std::string notes_text(const FileReport& report, const Diagnostic& d);
+
 }  // namespace assetlint

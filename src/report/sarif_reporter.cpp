@@ -135,7 +135,19 @@ void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, cons
       result["ruleId"] = d.rule;
       if (auto it = rule_index.find(d.rule); it != rule_index.end()) result["ruleIndex"] = it->second;
       result["level"] = sarif_level(d.severity);
-      result["message"] = message(d.message);
+      if (d.notes.empty() && !d.fix) {
+        result["message"] = message(d.message);
+      } else {
+        // Plain text keeps the primary line first; markdown lists the notes beneath it.
+        const std::string body = notes_text(report, d);
+        std::string markdown = d.message + "\n";
+        for (std::size_t start = 0; start < body.size();) {
+          const std::size_t nl = std::min(body.find('\n', start), body.size());
+          markdown += "\n- " + body.substr(start, nl - start);
+          start = nl + 1;
+        }
+        result["message"] = {{"text", d.message + "\n" + body}, {"markdown", markdown}};
+      }
       ordered_json physical{{"artifactLocation", location(diagnostic_path(report, d))}};
       if (d.span.line != 0) {
         const LineColumn end = end_position(report, d.span);
@@ -145,6 +157,20 @@ void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, cons
                               {"endColumn", end.column}};
       }
       result["locations"] = ordered_json::array({{{"physicalLocation", std::move(physical)}}});
+      ordered_json related = ordered_json::array();
+      for (const Note& note : d.notes) {
+        if (!note.span.valid()) continue;
+        const LineColumn end = end_position(report, note.span);
+        ordered_json region{{"startLine", note.span.line},
+                            {"startColumn", note.span.column},
+                            {"endLine", end.line},
+                            {"endColumn", end.column}};
+        related.push_back({{"id", related.size() + 1},
+                           {"physicalLocation",
+                            {{"artifactLocation", location(note_path(report, note))}, {"region", std::move(region)}}},
+                           {"message", message(note.message)}});
+      }
+      if (!related.empty()) result["relatedLocations"] = std::move(related);
       if (d.fix && d.fix->applicability != Applicability::Display && !d.fix->edits.empty()) {
         // One artifactChange per file, replacements in the fix's order.
         std::vector<FileId> files;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "report/report_util.h"
 #include "report/summary.h"
 
 namespace assetlint {
@@ -35,6 +36,14 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
       out << fmt::format("{}{}:{}:{}:{} {}{}:{} {} {}[{}]{}{}\n", bold, path, d.span.line, d.span.column, reset,
                          options.color ? severity_color(d.severity) : "", severity_name(d.severity), reset, d.message,
                          dim, d.rule, marker, reset);
+      for (const Note& note : d.notes) {
+        if (note.span.valid())
+          out << fmt::format("  {}{}:{}:{}:{} {}note:{} {}\n", bold, note_path(report, note), note.span.line,
+                             note.span.column, reset, bold, reset, note.message);
+        else
+          out << fmt::format("  {}note:{} {}\n", bold, reset, note.message);
+      }
+      if (d.fix) out << fmt::format("  {}help:{} {}\n", bold, reset, help_line(*d.fix));
     }
   }
   if (!options.show_summary) return;

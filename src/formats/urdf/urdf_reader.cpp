@@ -68,7 +68,7 @@ class UrdfReader {
 
   void parse_error(const Span& span, std::string message) {
     result_.diagnostics.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity, span,
-                                   std::move(message), std::nullopt});
+                                   std::move(message), std::nullopt, {}});
   }
 
   // Pairs each tinyxml2 element with the scanner's start tag: both list elements in
@@ -313,7 +313,7 @@ class UrdfReader {
       if (std::find(seen.begin(), seen.end(), std::pair{span.offset, message}) != seen.end()) continue;
       seen.emplace_back(span.offset, message);
       result_.diagnostics.push_back({std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span,
-                                     fmt::format("urdfdom rejects the file: {}", message), std::nullopt});
+                                     fmt::format("urdfdom rejects the file: {}", message), std::nullopt, {}});
     }
   }
 

@@ -121,14 +121,14 @@ class Composer {
 
   void report(const Span& span, Severity severity, std::string message) {
     if (!reported_.insert({span.file, span.offset}).second) return;
-    stage_.diagnostics.push_back({std::string(rules::kLayerUnresolved.id), severity, span, std::move(message), std::nullopt});
+    stage_.diagnostics.push_back({std::string(rules::kLayerUnresolved.id), severity, span, std::move(message), std::nullopt, {}});
   }
 
   void parse(FileId id) {
     ParseResult r = parse_layer(*stage_.sources[id], id);
     if (!r.ok()) {
       stage_.diagnostics.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity,
-                                    r.error().span, r.error().message, std::nullopt});
+                                    r.error().span, r.error().message, std::nullopt, {}});
       stage_.usable = false;
       return;
     }

@@ -115,7 +115,7 @@ class Reader {
   }
 
   void report(const RuleInfo& rule, const Span& span, std::string message) {
-    result_.diagnostics.push_back({std::string(rule.id), rule.default_severity, span, std::move(message), std::nullopt});
+    result_.diagnostics.push_back({std::string(rule.id), rule.default_severity, span, std::move(message), std::nullopt, {}});
   }
 
   // The declaration widened to whole lines when it stands alone on them, so that
