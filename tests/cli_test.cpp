@@ -24,11 +24,15 @@ std::string bad_urdf() {
 }  // namespace
 
 TEST_CASE("cli: a clean file exits 0 with a summary", "[cli]") {
-  auto r = run_cli({kClean});
+  // The fixture's own asset-lint.toml tells the guide's story; without it the gripper is clean.
+  assetlint::test::TempDir dir;
+  assetlint::test::write_file(dir.path() / "gripper.urdf",
+                              assetlint::test::read_file(assetlint::test::source_dir() / kClean));
+  auto r = run_cli({"gripper.urdf"}, dir.path());
   CHECK(r.exit_code == 0);
   CHECK(r.out == "No problems found in 1 file.\n");
   CHECK(r.err.empty());
-  auto with_check = run_cli({"check", kClean});
+  auto with_check = run_cli({"check", "gripper.urdf"}, dir.path());
   CHECK(with_check.exit_code == 0);
 }
 

@@ -101,6 +101,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   std::string output_file;
   std::string config_path;
   bool allow_outside_root = false;
+  std::string root;
   double timesteps = 0;
   unsigned iterations = 0;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
@@ -123,9 +124,11 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
       ->check(CLI::PositiveNumber);
   app.add_option("--position-iterations", iterations, "Solver position iterations, when the asset authors none")
       ->check(CLI::Range(1u, 255u));
-  app.add_flag("--allow-outside-root", allow_outside_root,
-               "Let USD composition read layers outside the checked tree (the directory named, or the working "
-               "directory)");
+  app.add_option("--root", root,
+                 "The checked tree whose files USD composition may read (default: the file's git work tree, else "
+                 "the directory of its asset-lint.toml, else the directory named or the working directory)")
+      ->check(CLI::ExistingDirectory);
+  app.add_flag("--allow-outside-root", allow_outside_root, "Let USD composition read layers outside the checked tree");
   app.add_flag("--fix", fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", diff, "Print a unified diff of what --fix would change; write nothing");
@@ -179,6 +182,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   if (app.count("--timesteps-per-second")) overrides.timesteps_per_second = timesteps;
   if (app.count("--position-iterations")) overrides.position_iterations = static_cast<double>(iterations);
   overrides.allow_outside_root = allow_outside_root;
+  overrides.root = root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : paths)
     if (std::filesystem::is_directory(path)) overrides.trees.push_back(path);

@@ -73,8 +73,11 @@ struct Settings {
   GripperSpec gripper;
   std::map<std::string, DriveSettings, std::less<>> drives;
   std::string config_path;  // the asset-lint.toml in effect; empty when none
-  // The directory trees the user named: composed USD layers are read only inside the
-  // one that holds the checked file (its own directory when none does).
+  // The checked tree, whose files composed USD layers may read (config/project_root.h):
+  // `root` when set (--root), else the file's git work tree, else the directory of its
+  // asset-lint.toml, else the deepest of `trees` (the directories named on the command
+  // line and the working directory) that holds it.
+  std::string root;
   std::vector<std::string> trees;
   bool allow_outside_root = false;
   std::map<std::string, Severity, std::less<>> severity_overrides;

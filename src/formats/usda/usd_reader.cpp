@@ -7,6 +7,7 @@
 #include <map>
 #include <unordered_set>
 
+#include "formats/usda/skipped_layers.h"
 #include "rules/reader_rules.h"
 
 namespace assetlint::usda {
@@ -86,6 +87,7 @@ class Reader {
       if (prim.has_api_schema("PhysxArticulationAPI") && !result_.asset.scene.position_iterations)
         result_.asset.scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
     }
+    weigh_skipped_arcs(stage_, result_);
     return std::move(result_);
   }
 
