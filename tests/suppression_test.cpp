@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "engine/linter.h"
-#include "engine/suppressions.h"
+#include "pipeline/lint.h"
+#include "formats/suppressions.h"
 #include "test_support.h"
 
 using namespace assetlint;

@@ -8,10 +8,10 @@
 #include <fstream>
 #include <thread>
 
-#include "cli/rule_docs.h"
+#include "report/rule_docs.h"
 #include "config/resolver.h"
-#include "engine/linter.h"
-#include "fix/command.h"
+#include "pipeline/lint.h"
+#include "commands/fix.h"
 #include "report/concise_reporter.h"
 #include "report/github_reporter.h"
 #include "report/json_reporter.h"

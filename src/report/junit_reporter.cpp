@@ -4,7 +4,7 @@
 
 #include <map>
 
-#include "engine/suppressions.h"
+#include "formats/suppressions.h"
 #include "report/report_util.h"
 #include "rules/registry.h"
 

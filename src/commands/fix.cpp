@@ -1,4 +1,4 @@
-#include "fix/command.h"
+#include "commands/fix.h"
 
 #include <fmt/format.h>
 

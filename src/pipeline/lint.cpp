@@ -1,4 +1,4 @@
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 
 #include "config/drive_overrides.h"
 #include "engine/rule.h"
-#include "engine/suppressions.h"
+#include "formats/suppressions.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "rules/registry.h"

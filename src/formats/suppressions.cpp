@@ -1,4 +1,4 @@
-#include "engine/suppressions.h"
+#include "formats/suppressions.h"
 
 #include <fmt/format.h>
 
