@@ -8,6 +8,7 @@
 
 #include "config/config.h"
 #include "pipeline/lint.h"
+#include "formats/file_kind.h"
 #include "report/text_reporter.h"
 #include "test_support.h"
 

@@ -6,6 +6,7 @@
 
 #include "pipeline/lint.h"
 #include "formats/suppressions.h"
+#include "util/path_glob.h"
 #include "test_support.h"
 
 using namespace assetlint;

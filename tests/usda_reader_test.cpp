@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "pipeline/lint.h"
+#include "formats/file_kind.h"
 #include "formats/usda/usd_reader.h"
 #include "engine/rule.h"
 #include "report/text_reporter.h"

@@ -6,6 +6,7 @@
 
 #include "formats/suppressions.h"
 #include "report/report_util.h"
+#include "pipeline/suppressions.h"
 #include "rules/registry.h"
 
 namespace assetlint {
