@@ -64,6 +64,8 @@ const char* kConfiguration = R"(#usda 1.0
 
 // configuration/robot.usda sublayers ../payloads/physics.usda, as the vendor's Isaac assets do.
 fs::path vendor_layout(const fs::path& dir) {
+  fs::create_directories(dir / "payloads");
+  fs::create_directories(dir / "configuration");
   write_file(dir / "payloads" / "physics.usda", kPayload);
   write_file(dir / "configuration" / "robot.usda", kConfiguration);
   return dir / "configuration" / "robot.usda";
@@ -114,12 +116,10 @@ TEST_CASE("checked root: a skipped layer that held the joints is a warning namin
   CHECK(r.out ==
         "robot.usda:6:9: warning: layer '../payloads/physics.usda' is outside the checked tree; skipped "
         "[layer-unresolved]\n"
-        "  note: the checked tree is '" +
-            fs::canonical(tmp.path() / "configuration").string() +
-            "' (the git work tree, else the directory of asset-lint.toml, else the directory named); --root DIR or "
-            "--allow-outside-root reads layers beyond it\n"
-            "  note: no joint of the stage was read: the joint, drive, mimic and inertia rules checked nothing there\n"
-            "Found 1 problem (0 errors, 1 warning, 0 infos) in 1 file.\n");
+        "  note: the checked tree is '.' (the git work tree, else the directory of asset-lint.toml, else the directory named); --root DIR or "
+        "--allow-outside-root reads layers beyond it\n"
+        "  note: no joint of the stage was read: the joint, drive, mimic and inertia rules checked nothing there\n"
+        "Found 1 problem (0 errors, 1 warning, 0 infos) in 1 file.\n");
 
   // --root names the project: the payload is read, and what it holds is checked.
   const auto rooted = run_cli({"--root", "..", "--select", "layer-unresolved", "robot.usda"}, tmp.path() / "configuration");
@@ -136,7 +136,18 @@ TEST_CASE("checked root: a read layer stack whose bodies lack mass names the dri
   write_file(tmp.path() / "asset-lint.toml", "");
   const auto r = run_cli({"--select", "layer-unresolved", "configuration/robot.usda"}, tmp.path());
   CHECK(r.exit_code == 1);
-  CHECK(r.out.find("payloads/physics.usda:4:19: warning: layer './masses.usda' cannot be read") != std::string::npos);
+  CHECK(r.out.find("payloads/physics.usda:4:18: warning: layer './masses.usda' cannot be read") != std::string::npos);
   CHECK(r.out.find("  note: drive-natural-frequency, drive-implicit-attenuation and drive-damping-ratio not checked "
                    "for '/robot/joint': no layer read gives a mass to '/robot/finger'\n") != std::string::npos);
+}
+
+TEST_CASE("checked root: the compliant vendor-layout stack checked from configuration/ reports the copied gains",
+          "[root][cli]") {
+  const fs::path configuration = test::fixtures_dir() / "usda" / "robotiq_compliant" / "configuration";
+  const auto r = run_cli({"gripper_config_physics_compliant.usda"}, configuration);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("[layer-unresolved]") == std::string::npos);
+  CHECK(r.out.find("../payloads/gripper_physics_compliant.usda:") != std::string::npos);
+  CHECK(r.out.find("[mimic-copied-drive-gains]") != std::string::npos);
+  CHECK(r.out.find("naturalFrequency 5000") != std::string::npos);
 }

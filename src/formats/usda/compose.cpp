@@ -95,7 +95,7 @@ class Composer {
     const std::string key = normalize(root->path());
     stage_.sources.push_back(std::move(root));
     stage_.layers.emplace_back();
-    by_path_[key] = Loaded{0, {}};
+    by_path_[key] = Loaded{0, {}, Severity::Info, {}};
     parse(0);
     if (!stage_.usable) return std::move(stage_);
     stage_.root_stack = stack(0);
@@ -160,6 +160,16 @@ class Composer {
     return it->second.id;
   }
 
+  // The checked tree as messages show it: relative to the working directory when it is
+  // below it, so that reports do not carry machine paths.
+  std::string shown_root() const {
+    if (root_dir_.empty()) return ".";
+    std::error_code ec;
+    const fs::path relative = fs::path(root_dir_abs_).lexically_relative(fs::current_path(ec));
+    if (!ec && !relative.empty() && *relative.begin() != "..") return relative.generic_string();
+    return root_dir_.generic_string();
+  }
+
   Loaded load(const std::string& key) {
     if (!options_.allow_outside_root) {
       const fs::path relative = fs::path(normalize(fs::absolute(key))).lexically_relative(root_dir_abs_);
@@ -167,21 +177,21 @@ class Composer {
         return {std::nullopt, "is outside the checked tree; skipped", Severity::Info,
                 fmt::format("the checked tree is '{}' (the git work tree, else the directory of asset-lint.toml, else "
                             "the directory named); --root DIR or --allow-outside-root reads layers beyond it",
-                            root_dir_.empty() ? std::string(".") : root_dir_.generic_string())};
+                            shown_root())};
     }
     std::string ext = fs::path(key).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     const char* binary = "is a binary USD file, which a text linter cannot read; its opinions are skipped";
-    if (ext == ".usdc" || ext == ".usdz") return {std::nullopt, binary};
+    if (ext == ".usdc" || ext == ".usdz") return {std::nullopt, binary, Severity::Info, {}};
     std::string error;
     std::optional<std::string> text = files_.read(key, error);
-    if (!text) return {std::nullopt, fmt::format("cannot be read ({}); skipped", error)};
-    if (!starts_with_text_header(*text)) return {std::nullopt, binary};
+    if (!text) return {std::nullopt, fmt::format("cannot be read ({}); skipped", error), Severity::Info, {}};
+    if (!starts_with_text_header(*text)) return {std::nullopt, binary, Severity::Info, {}};
     const auto id = static_cast<FileId>(stage_.sources.size());
     stage_.sources.push_back(std::make_shared<const SourceFile>(key, std::move(*text)));
     stage_.layers.emplace_back();
     parse(id);
-    return {id, {}};
+    return {id, {}, Severity::Info, {}};
   }
 
   // A layer and its sublayers, strongest first; a layer reached twice keeps its first

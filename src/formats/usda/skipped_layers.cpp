@@ -40,14 +40,16 @@ void add_unique(std::vector<std::string>& list, const std::string& name) {
   if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
 }
 
-// The checks the asset could not run because values are missing in `scope`.
-std::vector<std::string> lost_checks(const Asset& asset, const std::string& scope) {
+// The checks the asset could not run because values are missing in `scope`: joints
+// declared under it or attached to a body under it. `expect_joints`: the scope is where
+// joints are declared (the whole stage, a root prim, a joint), so finding none is a loss.
+std::vector<std::string> lost_checks(const Asset& asset, const std::string& scope, bool expect_joints) {
   std::vector<std::string> notes;
   std::size_t joints_in_scope = 0;
   std::vector<std::string> massless_driven;
   std::vector<std::string> massless_links;
   for (const Joint& joint : asset.joints) {
-    if (!under(joint.name.text, scope)) continue;
+    if (!under(joint.name.text, scope) && !under(joint.parent.text, scope) && !under(joint.child.text, scope)) continue;
     ++joints_in_scope;
     if (!joint.drive) continue;
     bool lacking = false;
@@ -62,6 +64,7 @@ std::vector<std::string> lost_checks(const Asset& asset, const std::string& scop
     if (lacking) add_unique(massless_driven, joint.name.text);
   }
   if (joints_in_scope == 0) {
+    if (!expect_joints) return notes;
     notes.push_back(fmt::format("no joint {} was read: the joint, drive, mimic and inertia rules checked nothing there",
                                 scope.empty() ? std::string("of the stage") : fmt::format("under '{}'", scope)));
   } else if (!massless_driven.empty()) {
@@ -77,11 +80,13 @@ std::vector<std::string> lost_checks(const Asset& asset, const std::string& scop
 void weigh_skipped_arcs(const Stage& stage, ReadResult& result) {
   for (const Stage::SkippedArc& arc : stage.skipped) {
     if (arc.diagnostic >= result.diagnostics.size()) continue;
+    bool expect_joints = true;
     if (!arc.scope.empty()) {
       const ComposedPrim* prim = stage.find(arc.scope);
       if (!prim || !physics_prim(*prim)) continue;
+      expect_joints = prim->parent == static_cast<std::size_t>(-1) || prim->type_name.find("Joint") != std::string::npos;
     }
-    const std::vector<std::string> lost = lost_checks(result.asset, arc.scope);
+    const std::vector<std::string> lost = lost_checks(result.asset, arc.scope, expect_joints);
     if (lost.empty()) continue;
     Diagnostic& d = result.diagnostics[arc.diagnostic];
     d.severity = std::max(d.severity, Severity::Warning);
