@@ -3,6 +3,7 @@
 // ASSET_LINT_UPDATE_EXPECTED=1 rewrites the .expected files (review the diff!).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 
@@ -36,7 +37,7 @@ class FixturesFileSystem final : public FileSystem {
   }
 };
 
-std::string render(const std::filesystem::path& file) {
+FileReport lint_fixture(const std::filesystem::path& file) {
   const std::string relative = std::filesystem::relative(file, test::fixtures_dir()).generic_string();
   // A fixture directory may hold an asset-lint.toml (simulation rate, gripper spec,
   // drive gains for URDF), found as the CLI finds it.
@@ -48,7 +49,11 @@ std::string render(const std::filesystem::path& file) {
     INFO((error ? error->to_string() : std::string()));
     REQUIRE_FALSE(error);
   }
-  FileReport report = lint_text(relative, test::read_file(file), settings, FixturesFileSystem());
+  return lint_text(relative, test::read_file(file), settings, FixturesFileSystem());
+}
+
+std::string render(const std::filesystem::path& file) {
+  const FileReport report = lint_fixture(file);
   std::ostringstream out;
   write_text(out, {report}, TextOptions{false, false});
   return out.str();
