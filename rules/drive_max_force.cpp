@@ -11,10 +11,6 @@
 namespace assetlint::rules {
 namespace {
 
-bool drive_active(const Drive& drive) {
-  return (drive.stiffness && drive.stiffness->value > 0) || (drive.damping && drive.damping->value > 0);
-}
-
 // The guide's first step: bound every drive's force by the robot's spec. Without a spec
 // only what is certainly wrong is a warning; sentinels and placeholders are infos that
 // say what they mean to whom (PHYSICS.md §2 item 8).
@@ -27,13 +23,13 @@ class DriveMaxForce final : public Rule {
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
       const bool usd = asset.format == SourceFormat::Usda;
-      if (joint.drive && !drive_active(*joint.drive)) continue;
+      if (joint.drive && !has_active_drive(joint)) continue;
       if (usd && !joint.drive) continue;  // no applied drive: not a driven joint in USD
       // URDF carries no drive: a joint is driven when configuration gives it one or the
       // spec names it; otherwise its effort is only a limit.
       const auto required = &joint == spec ? physics::required_force(asset, settings, joint) : std::nullopt;
       const bool driven = joint.drive || (&joint == spec && (settings.gripper.driven_joint || required));
-      Context c{asset, settings, joint, usd, driven, required ? &*required : nullptr, out};
+      Context c{{asset, settings, joint, usd, driven, out}, required ? &*required : nullptr};
       if (usd && (!joint.drive->max_force || std::isinf(joint.drive->max_force->value))) {
         unbounded(c);
         continue;
@@ -45,15 +41,8 @@ class DriveMaxForce final : public Rule {
   }
 
  private:
-  struct Context {
-    const Asset& asset;
-    const Settings& settings;
-    const Joint& joint;
-    bool usd;
-    bool driven;
+  struct Context : LimitCheck {
     const physics::RequiredForce* required;
-    Reporter& out;
-    std::string label() const { return (driven ? "driven " : "") + joint_label(joint); }
     const char* what() const { return usd ? "maxForce" : "effort"; }
   };
 

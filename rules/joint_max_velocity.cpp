@@ -11,11 +11,6 @@
 namespace assetlint::rules {
 namespace {
 
-bool drive_active(const Joint& joint) {
-  return joint.drive && ((joint.drive->stiffness && joint.drive->stiffness->value > 0) ||
-                         (joint.drive->damping && joint.drive->damping->value > 0));
-}
-
 // The guide's second step: bound the driven joint's velocity by the spec, ω = joint
 // range / (stroke per finger / finger speed). Besides the spec: what a 0, a sentinel or
 // a missing value means to PhysX and to the importers (PHYSICS.md §2 item 8).
@@ -30,8 +25,8 @@ class JointMaxVelocity final : public Rule {
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
       const auto wanted = &joint == spec ? physics::required_velocity(settings, joint) : std::nullopt;
-      const bool driven = drive_active(joint) || (&joint == spec && (settings.gripper.driven_joint || wanted));
-      const Context c{asset, settings, joint, usd, driven, wanted ? &*wanted : nullptr, out};
+      const bool driven = has_active_drive(joint) || (&joint == spec && (settings.gripper.driven_joint || wanted));
+      const Context c{{asset, settings, joint, usd, driven, out}, wanted ? &*wanted : nullptr};
       const OptQuantity& v = joint.velocity;
       if (v && v->span.valid() && v->value == 0 && usd) frozen(c, *v);
       else if (v && v->span.valid() && v->value <= 0 && !usd) sentinel(c, *v);
@@ -42,15 +37,8 @@ class JointMaxVelocity final : public Rule {
   }
 
  private:
-  struct Context {
-    const Asset& asset;
-    const Settings& settings;
-    const Joint& joint;
-    bool usd;
-    bool driven;
+  struct Context : LimitCheck {
     const physics::RequiredVelocity* wanted;
-    Reporter& out;
-    std::string label() const { return (driven ? "driven " : "") + joint_label(joint); }
     // The unit the file writes this joint's velocity in: a prismatic joint's is a distance per second.
     Unit file_unit() const {
       if (!is_angular(joint.type)) return Unit::MeterPerSecond;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "rules/support.h"
+
 namespace assetlint::rules {
 
 bool is_power_of_ten(double value, int min_exponent) {
@@ -27,5 +29,12 @@ std::size_t movable_joint_count(const Asset& asset) {
   for (const Joint& joint : asset.joints) count += is_single_dof(joint.type) ? 1 : 0;
   return count;
 }
+
+bool has_active_drive(const Joint& joint) {
+  return joint.drive && ((joint.drive->stiffness && joint.drive->stiffness->value > 0) ||
+                         (joint.drive->damping && joint.drive->damping->value > 0));
+}
+
+std::string LimitCheck::label() const { return (driven ? "driven " : "") + joint_label(joint); }
 
 }  // namespace assetlint::rules

@@ -4,6 +4,7 @@
 // on every joint of a hand). Their meaning is "not set", not a spec.
 #include <vector>
 
+#include "engine/rule.h"
 #include "model/asset.h"
 
 namespace assetlint::rules {
@@ -17,5 +18,19 @@ std::vector<const Joint*> joints_sharing(const Asset& asset, const Joint& joint,
 
 // Movable single-DOF joints in the asset.
 std::size_t movable_joint_count(const Asset& asset);
+
+// A drive with stiffness or damping > 0 (applied in USD, or from [drives.<joint>]).
+bool has_active_drive(const Joint& joint);
+
+// What drive-max-force and joint-max-velocity know about the joint they judge.
+struct LimitCheck {
+  const Asset& asset;
+  const Settings& settings;
+  const Joint& joint;
+  bool usd;
+  bool driven;  // a drive or the spec moves it; a URDF joint nothing drives is not "driven"
+  Reporter& out;
+  std::string label() const;  // "driven revolute joint 'J0'" / "revolute joint 'J0'"
+};
 
 }  // namespace assetlint::rules
