@@ -92,7 +92,7 @@ TEST_CASE("corpus: real findings on real files", "[corpus]") {
 
   // Placeholder limits: iCub's 50000 rad/s, R2's 1e7 N·m efforts.
   CHECK(count(lint("humanoid__icub_models_iCubGenova11.urdf"), "units-velocity-implausible") >= 10);
-  CHECK(find(lint("humanoid__nasa_r2c6.urdf"), "drive-max-force", "effort limit 1e7 N·m, a placeholder"));
+  CHECK(find(lint("humanoid__nasa_r2c6.urdf"), "drive-max-force", "effort 1e7 N·m of revolute joint 'r2/waist/joint0' looks like a placeholder"));
   // Undefined parent links and mimic references.
   CHECK(find(lint("quadruped__spot_ros_spot_arm.urdf"), "structure-undefined-link", "parent link 'body'"));
   CHECK(find(lint("humanoid__erd_alex_psyonic_hands.urdf"), "structure-mimic-reference", "which is not defined"));

@@ -47,16 +47,50 @@ TEST_CASE("guide: grip force, torque per joint, max drive force", "[guide]") {
     Joint j;
     j.name.text = name;
     j.type = JointType::Revolute;
-    if (std::string_view(name) != "finger_joint") j.mimic = Mimic{Name{"finger_joint", {}}, {}, {}, {}, {}, {}, {}};
+    if (std::string_view(name) != "finger_joint")
+      j.mimic = Mimic{Name{"finger_joint", {}}, Quantity::unauthored(1.0, Unit::None), {}, {}, {}, {}, {}};
     asset.joints.push_back(j);
   }
   const auto force = physics::required_force(asset, guide_settings(), asset.joints[0]);
   REQUIRE(force);
   CHECK(force->grip_force == Approx(166.667).epsilon(1e-5));  // 5·10/0.3
   CHECK(force->per_finger == Approx(83.333).epsilon(1e-5));
-  CHECK(force->per_joint == Approx(3.3333).epsilon(1e-4));    // the guide rounds up to 4
-  CHECK(force->joints == 6);                                  // J0 + 5 mimics
-  CHECK(force->required == Approx(20.0).epsilon(1e-9));       // 6 × 3.33; with the guide's 4: 24
+  CHECK(force->per_joint_torque == Approx(3.3333).epsilon(1e-4));  // the guide rounds up to 4
+  CHECK(force->rounded_torque == Approx(3.3333).epsilon(1e-4));    // no torque_margin: no rounding
+  CHECK(force->joints == 6);                                       // J0 + 5 mimics
+  CHECK(force->required == Approx(20.0).epsilon(1e-9));            // 6 × 3.33; with the guide's 4: 24
+
+  Settings margin = guide_settings();
+  margin.gripper.torque_margin = Configured<double>{1.0, "asset-lint.toml:9"};
+  const auto rounded = physics::required_force(asset, margin, asset.joints[0]);
+  REQUIRE(rounded);
+  CHECK(rounded->rounded_torque == 4.0);  // the guide: 3.33 → 4 N·m
+  CHECK(rounded->required == 24.0);       // 6 × 4 N·m on J0
+  CHECK(rounded->unit == Unit::NewtonMeter);
+  CHECK(physics::round_up_torque(4.0, margin.gripper) == 4.0);  // already on the grid
+  margin.gripper.torque_margin = Configured<double>{0.5, "--torque-margin"};
+  CHECK(physics::round_up_torque(3.3333, margin.gripper) == 3.5);
+}
+
+TEST_CASE("gripper spec: a prismatic finger needs the per-finger force itself, in N", "[guide]") {
+  Asset asset;
+  for (const char* name : {"left", "right"}) {
+    Joint j;
+    j.name.text = name;
+    j.type = JointType::Prismatic;
+    if (std::string_view(name) == "right")
+      j.mimic = Mimic{Name{"left", {}}, Quantity::unauthored(-1.0, Unit::None), {}, {}, {}, {}, {}};
+    asset.joints.push_back(j);
+  }
+  Settings settings = guide_settings();
+  settings.gripper.lever_arm_m.reset();                 // not needed: no lever arm on a slide
+  settings.gripper.torque_margin = Configured<double>{1.0, "asset-lint.toml:9"};  // a torque margin: N·m only
+  const auto force = physics::required_force(asset, settings, asset.joints[0]);
+  REQUIRE(force);
+  CHECK(force->unit == Unit::Newton);
+  CHECK(force->per_finger == Approx(83.333).epsilon(1e-5));
+  CHECK(force->gearing_sum == 2.0);
+  CHECK(force->required == Approx(166.667).epsilon(1e-5));  // 2 fingers × 83.3 N, never N·m
 }
 
 TEST_CASE("guide: close time and max joint velocity", "[guide]") {
@@ -153,11 +187,30 @@ TEST_CASE("guide: a max force below the payload spec is reported with its deriva
   const FileReport report = lint_text("robotiq_2f85.urdf", text, settings);
   const Diagnostic* force = find(report, "drive-max-force");
   REQUIRE(force);
-  CHECK(force->message ==
-        "effort limit 12 N·m of revolute joint 'finger_joint' is below the 20 N·m the payload spec needs: 5 kg × 10 "
-        "m/s² / μ 0.3 = 166.7 N grip, 83.33 N per finger × 0.04 m lever arm = 3.33 N·m per joint × 6 joints driven "
-        "through 'finger_joint' = 20 N·m");
+  CHECK(force->message == "effort 12 N·m of revolute joint 'finger_joint' is below the 20 N·m the payload spec needs");
+  REQUIRE(force->notes.size() == 3);
+  CHECK(force->notes[0].message == "Grip: 5 kg × 10 m/s² / μ 0.3 = 166.7 N, 83.33 N per finger.");
+  CHECK(force->notes[1].message == "Per revolute joint: 83.33 N × 0.04 m lever arm = 3.33 N·m.");
+  CHECK(force->notes[2].message ==
+        "'finger_joint' drives 6 joints (itself and 5 mimics), Σ|gearing| = 6: it needs 20 N·m.");
   REQUIRE(force->fix);
   CHECK(force->fix->edits.size() == 1);
   CHECK(force->fix->edits[0].replacement == "20");
+
+  // The guide's rounding: torque_margin 1 turns 3.33 into 4 N·m per joint, 24 N·m on J0.
+  settings.gripper.torque_margin = Configured<double>{1.0, "asset-lint.toml:9"};
+  const FileReport with_margin = lint_text("robotiq_2f85.urdf", text, settings);
+  const Diagnostic* rounded = find(with_margin, "drive-max-force");
+  REQUIRE(rounded);
+  CHECK(rounded->message == "effort 12 N·m of revolute joint 'finger_joint' is below the 24 N·m the payload spec needs");
+  CHECK(rounded->fix->edits[0].replacement == "24");
+
+  // 1000 N·m, the public Robotiq URDFs' value, is 41.7× what the spec needs: reported too.
+  text.replace(text.find("effort=\"12\""), 11, "effort=\"1000\"");
+  const FileReport placeholder = lint_text("robotiq_2f85.urdf", text, settings);
+  const Diagnostic* strong = find(placeholder, "drive-max-force");
+  REQUIRE(strong);
+  CHECK(strong->severity == Severity::Warning);
+  CHECK(strong->message == "effort 1000 N·m of revolute joint 'finger_joint' is 41.7× the 24 N·m the payload spec needs");
+  CHECK(strong->fix->edits[0].replacement == "24");
 }

@@ -390,18 +390,24 @@ TEST_CASE("inertia-invalid: a massless or missing inertial on a moving link", "[
   CHECK(lint(gripper(R"(<mass value="0.636"/>)", R"(<mass value="0"/>)")).diagnostics.empty());
 }
 
-TEST_CASE("drive-max-force: zero, placeholder, and the placeholder_force option; mimics are not driven", "[rules]") {
+TEST_CASE("drive-max-force: sentinels and placeholders are infos without a spec; mimics are not driven", "[rules]") {
   const std::string zero = gripper(kDrivenLimit, R"(<limit lower="0" upper="0.820305" effort="0" velocity="2.9"/>)");
   const auto report = lint(zero);
   REQUIRE(report.diagnostics.size() == 1);
-  CHECK(report.diagnostics[0].rule == "drive-max-force");
-  CHECK(report.diagnostics[0].severity == Severity::Warning);
-  CHECK(report.diagnostics[0].span.line == 27);
-  CHECK(report.diagnostics[0].span.column == 47);
-  CHECK(report.diagnostics[0].span.offset == offset_of(zero, R"(effort="0")", "0"));
+  const Diagnostic& sentinel = report.diagnostics[0];
+  CHECK(sentinel.rule == "drive-max-force");
+  CHECK(sentinel.severity == Severity::Info);
+  CHECK(sentinel.span.line == 27);
+  CHECK(sentinel.span.column == 47);
+  CHECK(sentinel.span.offset == offset_of(zero, R"(effort="0")", "0"));
+  // No [drives] table and no spec: the joint is not called driven.
+  CHECK(sentinel.message == "effort 0 N·m of revolute joint 'finger_joint' is a sentinel: unbounded in Isaac Sim, zero elsewhere");
+  REQUIRE(sentinel.notes.size() == 1);
+  CHECK(sentinel.notes[0].message.find("Isaac Sim's URDF importer reads effort ≤ 0 as no limit") == 0);
 
   CHECK(lint(gripper(kMimicLimit, R"(<limit lower="-0.820305" upper="0" effort="0" velocity="2.9"/>)")).diagnostics.empty());
 
+  // 1000 alone on the driven joint (the mimic says 4): neither ≥ placeholder_force nor repeated.
   const std::string thousand =
       gripper(kDrivenLimit, R"(<limit lower="0" upper="0.820305" effort="1000" velocity="2.9"/>)");
   CHECK(lint(thousand).diagnostics.empty());
@@ -409,9 +415,20 @@ TEST_CASE("drive-max-force: zero, placeholder, and the placeholder_force option;
   settings.rule_options["drive-max-force"]["placeholder_force"] = 1000.0;
   const auto placeholder = lint(thousand, settings);
   REQUIRE(placeholder.diagnostics.size() == 1);
-  CHECK(placeholder.diagnostics[0].message ==
-        "driven revolute joint 'finger_joint' has effort limit 1000 N·m, a placeholder (≥ 1000): the drive is "
-        "effectively unbounded; set it from the robot's spec");
+  CHECK(placeholder.diagnostics[0].severity == Severity::Info);
+  CHECK(placeholder.diagnostics[0].message == "effort 1000 N·m of revolute joint 'finger_joint' looks like a placeholder");
+  CHECK(placeholder.diagnostics[0].notes.at(0).message ==
+        "At or above placeholder_force 1000, the bound is effectively no bound.");
+
+  // The same round 1000 on the mimic too: the ros-industrial pattern, found without the option.
+  const std::string both = gripper(kMimicLimit, R"(<limit lower="-0.820305" upper="0" effort="1000" velocity="2.9"/>)");
+  std::string repeated = both;
+  repeated.replace(repeated.find(R"(effort="24")"), 11, R"(effort="1000")");
+  const auto pattern = lint(repeated);
+  REQUIRE(pattern.diagnostics.size() == 1);
+  CHECK(pattern.diagnostics[0].message == "effort 1000 N·m of revolute joint 'finger_joint' looks like a placeholder");
+  CHECK(pattern.diagnostics[0].notes.at(0).message ==
+        "The same round 1000 is on 1 other joint of the file: a value written for every joint, not a motor's rating.");
 }
 
 TEST_CASE("severity overrides change only the named rules", "[rules]") {
@@ -425,7 +442,7 @@ TEST_CASE("severity overrides change only the named rules", "[rules]") {
   CHECK(report.diagnostics[1].severity == Severity::Error);
   const auto plain = lint(text, only({"units-angle-degrees", "drive-max-force"}));
   CHECK(plain.diagnostics.at(0).severity == Severity::Error);
-  CHECK(plain.diagnostics.at(1).severity == Severity::Warning);
+  CHECK(plain.diagnostics.at(1).severity == Severity::Info);  // effort 0: a sentinel, without a spec
 }
 
 TEST_CASE("selection: --select and --ignore globs over check and reader rules", "[rules]") {

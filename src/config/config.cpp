@@ -132,6 +132,7 @@ class Loader {
       else if (k == "finger_speed_m_s") g.finger_speed_m_s = positive(node, k);
       else if (k == "stroke_m") g.stroke_m = positive(node, k);
       else if (k == "target_delta_deg") g.target_delta_deg = *positive(node, k);
+      else if (k == "torque_margin") g.torque_margin = positive(node, k);
       else if (k == "driven_joint") g.driven_joint = Configured<std::string>{string(node, k), origin(node)};
       else unknown(key, "gripper");
     }

@@ -42,6 +42,9 @@ struct GripperSpec {
   std::optional<Configured<double>> finger_speed_m_s;
   std::optional<Configured<double>> stroke_m;
   Configured<double> target_delta_deg{5.0, "default"};
+  // Round the per-joint torque up to a multiple of this many N·m (the guide: 3.33 → 4);
+  // unset = no rounding. `tune --torque-margin` overrides it.
+  std::optional<Configured<double>> torque_margin;
   std::optional<Configured<std::string>> driven_joint;
 };
 

@@ -48,6 +48,15 @@ inline bool is_single_dof(JointType t) {
 
 enum class DriveType { Force, Acceleration };
 
+// USD PhysxDrivePerformanceEnvelopeAPI:<instance>: the drive's effort limit falls with
+// speed, |F| ≤ maxForce − velocityDependentResistance·|v|, and is 0 at maxActuatorVelocity.
+struct PerformanceEnvelope {
+  OptQuantity max_actuator_velocity;          // rad/s or m/s; unset = inf
+  OptQuantity velocity_dependent_resistance;  // N·m·s/rad or N·s/m; unset = 0
+  OptQuantity speed_effort_gradient;          // as written (deg/s per N·m); unset = 0
+  Span span;                                  // the schema application
+};
+
 struct Drive {
   OptQuantity stiffness;   // N·m/rad (angular) or N/m (linear)
   OptQuantity damping;     // N·m·s/rad or N·s/m
@@ -57,6 +66,7 @@ struct Drive {
   Span span;               // where the drive is declared (schema application or config table)
   std::string instance;    // USD multiple-apply instance ("angular", "linear", "rotX", ...)
   std::string origin;      // where a drive the file does not hold came from ("asset-lint.toml:14")
+  std::optional<PerformanceEnvelope> envelope;
 };
 
 struct Mimic {
