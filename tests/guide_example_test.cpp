@@ -7,6 +7,7 @@
 #include "engine/linter.h"
 #include "formats/urdf/urdf_reader.h"
 #include "physics/drive.h"
+#include "physics/drive_row.h"
 #include "physics/gripper.h"
 #include "test_support.h"
 
@@ -85,9 +86,12 @@ TEST_CASE("guide: stiffness, natural frequency, damping and armature", "[guide]"
   CHECK(physics::damping_for_ratio(1.0, 275, 3.4e-6) == Approx(0.061).epsilon(1e-2));
   CHECK(physics::natural_frequency(275, 5e-3) == Approx(234).epsilon(3e-3));
   CHECK(5e-3 / (50.0 * 50.0) == Approx(2e-6));  // rotor inertia behind G = 50
-  // The implicit spring: at 250 Hz the guide's tuned drive keeps (dt·nf)² ≫ 1.
-  CHECK(physics::implicit_fraction(1.0 / 250, physics::natural_frequency(275, 3.4e-6)) < 1e-3);
-  CHECK(physics::implicit_fraction(1.0 / 60, 0.0) == 1.0);
+  // The implicit spring at PhysX's TGS sub-step h = 1/(250 × 64): the final tuning keeps
+  // x = 0.41 of k·Δ at a stop on the lighter link, the original 0.078.
+  const physics::SimulationRate rate = physics::effective_simulation(Asset{}, guide_settings());
+  CHECK(rate.h() == Approx(1.0 / 16000));
+  CHECK(physics::drive_row(rate, 275, 0.061, DriveType::Force, inertia).x() == Approx(0.408).margin(1e-3));
+  CHECK(physics::drive_row(rate, 5700, 0.277, DriveType::Force, inertia).x() == Approx(0.078).margin(1e-3));
 }
 
 TEST_CASE("guide: the effective inertia of J0 is the lighter link, shifted to the joint", "[guide]") {

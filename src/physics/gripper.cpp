@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "physics/drive.h"
 #include "util/numbers.h"
 
@@ -25,14 +27,23 @@ std::optional<RequiredForce> required_force(const Asset& asset, const Settings& 
   f.grip_force = g.payload_kg->value * g.gravity.value / g.friction->value;
   f.per_finger = f.grip_force / 2.0;
   f.per_joint = f.per_finger * g.lever_arm_m->value;
-  f.joints = coupled_joints(asset, driven).size();
-  f.required = f.per_joint * static_cast<double>(f.joints);
+  // Each coupled joint needs the per-joint torque; through a mimic of gearing g the driver
+  // supplies |g| times it (virtual work), so the driver needs Σ|g|·τ.
+  const std::vector<const Joint*> set = coupled_joints(asset, driven);
+  f.joints = set.size();
+  for (const Joint* member : set)
+    f.gearing_sum += member != set.front() && member->mimic ? std::abs(member->mimic->multiplier.value) : 1.0;
+  f.required = f.per_joint * f.gearing_sum;
   f.derivation = fmt::format(
-      "{} kg × {} m/s² / μ {} = {} N grip, {} N per finger × {} m lever arm = {} N·m per joint × {} joint{} "
+      "{} kg × {} m/s² / μ {} = {} N grip, {} N per finger × {} m lever arm = {} N·m per joint × {} "
       "driven through '{}' = {} N·m",
       format_number(g.payload_kg->value), format_number(g.gravity.value), format_number(g.friction->value),
       format_number(f.grip_force, 4), format_number(f.per_finger, 4), format_number(g.lever_arm_m->value),
-      format_number(f.per_joint, 3), f.joints, f.joints == 1 ? "" : "s", driven.name.text, format_number(f.required, 3));
+      format_number(f.per_joint, 3),
+      std::abs(f.gearing_sum - static_cast<double>(f.joints)) < 1e-9
+          ? fmt::format("{} joint{}", f.joints, f.joints == 1 ? "" : "s")
+          : fmt::format("Σ|gearing| {} over {} joints", format_number(f.gearing_sum, 4), f.joints),
+      driven.name.text, format_number(f.required, 3));
   return f;
 }
 

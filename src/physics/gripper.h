@@ -17,7 +17,8 @@ struct RequiredForce {
   double per_finger = 0;       // N
   double per_joint = 0;        // N·m: per finger × lever arm
   std::size_t joints = 0;      // the drive moves itself plus its mimics
-  double required = 0;         // N·m on the driven joint
+  double gearing_sum = 0;      // Σ|gearing| over them (the driver counts 1)
+  double required = 0;         // N·m on the driven joint: per joint × Σ|gearing|
   std::string derivation;      // "5 kg × 10 m/s² / μ 0.3 = 166.7 N; …"
 };
 // Needs payload_kg, friction and lever_arm_m.
