@@ -41,11 +41,11 @@ class ArmatureExcessive final : public Rule {
           joint.armature->span.valid() ? joint.armature->span : joint.name.span,
           fmt::format("armature {} {} of {} is {}× the lighter link's inertia (threshold {}×)", format_number(armature, 3),
                       unit, short_name(joint), format_number(ratio, 3), format_number(factor)));
-      d.note(fmt::format("{}: the lighter link '{}' about '{}' has {} {}{}; justify the armature from the motor datasheet, "
+      d.note(fmt::format("For {}, the lighter link '{}' about '{}' has {} {}{}; justify the armature from the motor datasheet, "
                          "armature = G²·I_rotor: it equals a rotor as heavy as that link behind a {}:1 gearbox.",
                          joint_label(joint), inertia.link->name.text, inertia.via->name.text,
                          format_number(inertia.link_inertia, 3), unit,
-                         inertia.gearing != 1.0 ? fmt::format(" (reflected with gearing² {})", format_number(inertia.gearing * inertia.gearing, 3))
+                         std::abs(inertia.gearing) != 1.0 ? fmt::format(" (reflected with gearing² {})", format_number(inertia.gearing * inertia.gearing, 3))
                                                 : std::string(),
                          format_number(std::sqrt(ratio), 3)));
       if (!motor_text.empty()) d.note(std::move(motor_text));

@@ -92,9 +92,8 @@ class DriveImplicitAttenuation final : public Rule {
                                    format_number(settings.gripper.target_delta_deg.value), formula,
                                    describe(hold.uncapped, unit), describe(hold.spring, unit));
     if (std::isfinite(limit.max_force))
-      text += fmt::format(hold.capped ? ", capped at max force {} (the frame's impulse is clamped to maxForce·dt)"
-                                      : "; max force {} bounds it (the frame's impulse is clamped to maxForce·dt)",
-                          describe(limit.max_force, unit));
+      text += fmt::format("{} max force {} (the frame's impulse is clamped to maxForce·dt)",
+                          hold.capped ? ", capped at" : "; bounded by", describe(limit.max_force, unit));
     return text + ".";
   }
 

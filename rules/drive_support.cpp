@@ -48,7 +48,7 @@ std::string DrivenJoint::inertias_text() const {
   if (inertia.known) {
     lighter = fmt::format("lighter link {} {} ('{}' about '{}'{}{}), the guide's estimate", format_number(inertia.value, 3),
                           inertia_unit(), inertia.link->name.text, inertia.via->name.text,
-                          inertia.gearing != 1.0 ? fmt::format(", gearing² {}", format_number(inertia.gearing * inertia.gearing, 3))
+                          std::abs(inertia.gearing) != 1.0 ? fmt::format(", gearing² {}", format_number(inertia.gearing * inertia.gearing, 3))
                                                  : std::string(),
                           inertia.armature > 0 ? fmt::format(", armature {} included", format_number(inertia.armature, 3))
                                                : std::string());

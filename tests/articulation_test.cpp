@@ -132,7 +132,7 @@ TEST_CASE("unknown when a moving body has no authored mass or COM; world-welded 
   a.links = {massless("/r/base"), link("/r/knuckle", 0.03, {0, 0.03, 0.01}, {1e-5, 1e-5, 1e-5}), massless("/r/pad"),
              link("/r/finger", 0.0127, {0, 0, 0.01}, {2.1e-6, 2.1e-6, 1.3e-6})};
   a.links[1].inertial->com_authored = false;  // USD computes it from colliders
-  a.joints = {joint("/r/j0", JointType::Revolute, "/r/base", "/r/knuckle", {}, Eigen::Vector3d::UnitX()),
+  a.joints = {joint("/r/j0", JointType::Revolute, "/r/base", "/r/knuckle", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()),
               joint("/r/j1", JointType::Revolute, "/r/knuckle", "/r/finger", {0, 0.04, 0.04}, Eigen::Vector3d::UnitX()),
               joint("/r/weld", JointType::Fixed, "/r/finger", "/r/pad")};
   Articulation articulation(a);

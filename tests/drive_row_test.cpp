@@ -52,7 +52,8 @@ TEST_CASE("step h: TGS cuts the frame into position-iteration sub-steps, PGS doe
   tgs.min_position_iterations = 100;
   CHECK(tgs.iterations() == 100);
   CHECK(rate(60, 64).step_text() == "TGS, h = 1/3840 s");
-  CHECK(rate(70, 3).step_text() == "TGS, h = 0.00476 s");
+  CHECK(rate(70, 3).step_text() == "TGS, h = 1/210 s");
+  CHECK(rate(100.5, 1).step_text() == "TGS, h = 0.00995 s");
 }
 
 TEST_CASE("implicit factor x = 1/(1 + h·(h·k + d)·r): the guide's drives at 250 Hz × 64", "[physics][drive-row]") {

@@ -206,11 +206,6 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
     const int a = pa >= 0 ? body_of_link[static_cast<std::size_t>(pa)] : joint.parent.text.empty() ? world : -1;
     const int b = pb >= 0 ? body_of_link[static_cast<std::size_t>(pb)] : joint.child.text.empty() ? world : -1;
     if (a < 0 || b < 0 || a == b) continue;  // an undefined link, or a joint inside one body
-    if (is_multi_dof(joint.type)) {
-      if (unsupported_.empty())
-        unsupported_ = fmt::format("joint '{}' is {}, not modelled", joint.name.text, joint_type_name(joint.type));
-      continue;
-    }
     const int e = static_cast<int>(edges.size());
     edges.push_back({&joint, a, b});
     incident[static_cast<std::size_t>(a)].push_back(e);
@@ -240,6 +235,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
         tj.parent = at;
         tj.child = next;
         tj.armature = edge.joint->armature ? edge.joint->armature->value : 0.0;
+        tj.modelled = !is_multi_dof(edge.joint->type);
         // The joint frame in each body; the world side needs none (it does not move).
         const auto frame_in = [&](int body, int which) {
           const Name& name = which == 0 ? edge.joint->parent : edge.joint->child;
@@ -276,14 +272,17 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
 
 void Articulation::solve() {
   results_.assign(tree_.size(), {});
-  if (!unsupported_.empty()) {
-    for (auto& r : results_) r.reason = unsupported_;
-    return;
-  }
-  // Which tree each body belongs to, and what in it has unknown mass.
+  // Which tree each body belongs to, what in it has unknown mass, and which multi-DOF
+  // joint (not modelled) it holds.
   std::vector<int> tree_of(bodies_.size(), -1);
   for (std::size_t t = 0; t < roots_.size(); ++t) tree_of[static_cast<std::size_t>(roots_[t])] = static_cast<int>(t);
   for (const TreeJoint& j : tree_) tree_of[static_cast<std::size_t>(j.child)] = tree_of[static_cast<std::size_t>(j.parent)];
+  std::vector<std::string> unsupported(roots_.size());
+  for (const TreeJoint& j : tree_) {
+    std::string& reason = unsupported[static_cast<std::size_t>(tree_of[static_cast<std::size_t>(j.child)])];
+    if (!j.modelled && reason.empty())
+      reason = fmt::format("joint '{}' is {}, not modelled", j.joint->name.text, joint_type_name(j.joint->type));
+  }
   std::vector<std::vector<std::string>> unknown(roots_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     if (tree_of[b] < 0 || bodies_[b].world) continue;
@@ -323,6 +322,10 @@ void Articulation::solve() {
     ArticulatedInertia& result = results_[k];
     singular[c] = singular[p] || !(d[k] > 0);
     const auto& missing = unknown[static_cast<std::size_t>(tree_of[c])];
+    if (const std::string& reason = unsupported[static_cast<std::size_t>(tree_of[c])]; !reason.empty()) {
+      result.reason = reason;
+      continue;
+    }
     if (!missing.empty()) {
       result.unknown_links = missing;
       continue;
@@ -344,7 +347,7 @@ ArticulatedInertia Articulation::inertia(const Joint& joint) const {
   auto it = tree_index_.find(&joint);
   if (it != tree_index_.end()) return results_[static_cast<std::size_t>(it->second)];
   ArticulatedInertia none;
-  none.reason = unsupported_.empty() ? "the joint is not part of the articulation's tree" : unsupported_;
+  none.reason = "the joint is not part of the articulation's tree";
   return none;
 }
 

@@ -37,6 +37,7 @@ struct TreeJoint {
   Eigen::Matrix<double, 6, 1> motion = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Isometry3d child_in_parent = Eigen::Isometry3d::Identity();  // at q = 0
   double armature = 0;
+  bool modelled = true;  // false for multi-DOF joints: the trees holding one stay unknown
 };
 
 // What a joint's drive row sees.
@@ -83,7 +84,6 @@ class Articulation {
   std::unordered_map<std::string_view, int> body_index_;  // link name → body
   std::unordered_map<const Joint*, int> tree_index_;      // joint → tree_ entry
   std::vector<ArticulatedInertia> results_;         // per tree_ entry
-  std::string unsupported_;                         // why nothing is known (multi-DOF joints)
 };
 
 // The tree's free-root convention for an asset's format.
