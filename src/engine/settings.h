@@ -30,6 +30,7 @@ struct Configured {
 struct SimulationSettings {
   std::optional<Configured<double>> timesteps_per_second;
   std::optional<Configured<double>> position_iterations;
+  std::optional<Configured<double>> velocity_iterations;
   std::optional<Configured<std::string>> solver;  // "TGS" or "PGS"
 };
 

@@ -31,12 +31,16 @@ struct Inertial {
   // USD: physics:mass = 0 or an all-zero diagonalInertia means "let PhysX derive it".
   bool mass_authored = true;
   bool inertia_authored = true;
+  // USD without physics:centerOfMass: PhysX computes the COM from colliders; `com` is then
+  // the body origin standing in, not a fact.
+  bool com_authored = true;
 };
 
 struct Link {
   Name name;
   Span span;  // the element or prim
   std::optional<Inertial> inertial;
+  bool kinematic = false;  // USD physics:kinematicEnabled: moved by the user, not the solver
 };
 
 enum class JointType { Revolute, Continuous, Prismatic, Fixed, Floating, Planar, Spherical, Generic };
@@ -120,7 +124,10 @@ struct Joint {
 
 struct Scene {
   OptQuantity timesteps_per_second;  // 1/s
-  OptQuantity position_iterations;   // count
+  OptQuantity position_iterations;   // count: the articulation's solverPositionIterationCount
+  OptQuantity velocity_iterations;   // count: the articulation's solverVelocityIterationCount
+  OptQuantity min_position_iterations;  // the scene's clamps on every actor's position iterations
+  OptQuantity max_position_iterations;
   std::string solver;                // "TGS" / "PGS"; empty = unknown
   Span solver_span;
 };

@@ -87,8 +87,13 @@ class Reader {
       if (prim.has_api_schema("PhysicsRigidBodyAPI")) read_link(prim);
       if (auto type = joint_type(prim.type_name)) read_joint(prim, *type);
       if (prim.type_name == "PhysicsScene") read_scene(prim);
-      if (prim.has_api_schema("PhysxArticulationAPI") && !result_.asset.scene.position_iterations)
-        result_.asset.scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
+      if (prim.has_api_schema("PhysxArticulationAPI")) {
+        Scene& scene = result_.asset.scene;
+        if (!scene.position_iterations)
+          scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
+        if (!scene.velocity_iterations)
+          scene.velocity_iterations = number(prim, "physxArticulation:solverVelocityIterationCount", Unit::None);
+      }
     }
     for (Joint& joint : result_.asset.joints) {
       if (!joint.mimic) continue;
@@ -225,9 +230,12 @@ class Reader {
         in.com_span = com_span;
       } else {
         in.com_span = in.span;  // (-inf, -inf, -inf) or unauthored: PhysX computes it; the origin stands in
+        in.com_authored = false;
       }
       link.inertial = in;
     }
+    if (auto opinion = prim.attribute("physics:kinematicEnabled"); opinion && opinion->attribute->default_value)
+      link.kinematic = opinion->attribute->default_value->as_bool().value_or(false);
     result_.asset.links.push_back(std::move(link));
   }
 
@@ -476,6 +484,10 @@ class Reader {
     Scene& scene = result_.asset.scene;
     if (!prim.has_api_schema("PhysxSceneAPI")) return;
     if (!scene.timesteps_per_second) scene.timesteps_per_second = number(prim, "physxScene:timeStepsPerSecond", Unit::PerSecond);
+    if (!scene.min_position_iterations)
+      scene.min_position_iterations = number(prim, "physxScene:minPositionIterationCount", Unit::None);
+    if (!scene.max_position_iterations)
+      scene.max_position_iterations = number(prim, "physxScene:maxPositionIterationCount", Unit::None);
     if (scene.solver.empty()) {
       if (auto opinion = prim.attribute("physxScene:solverType")) {
         if (auto token = opinion->attribute->default_value->as_string()) {
