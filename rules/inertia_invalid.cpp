@@ -65,9 +65,42 @@ class InertiaInvalid final : public Rule {
       const auto found = where.find(&link);
       check_link(link, found == where.end() ? Placement{} : found->second, settings, out);
     }
+    report_mass_equals_inertia(asset, out);
   }
 
  private:
+  // Mass and every principal moment typed as the same number (Drake's Atlas Robotiq 3F:
+  // 1e-5 kg and 1e-5 kg·m² on 21 four-bar links): a placeholder, one info per file. Its
+  // radius of gyration √(I/m) = 1 m is far larger than any finger link.
+  static void report_mass_equals_inertia(const Asset& asset, Reporter& out) {
+    std::vector<const Link*> found;
+    for (const Link& link : asset.links) {
+      if (!link.inertial || !link.inertial->mass_authored || !link.inertial->inertia_authored) continue;
+      const Inertial& in = *link.inertial;
+      const double m = in.mass.value;
+      if (m <= 0 || m >= 1.0) continue;
+      if (in.inertia(0, 0) == m && in.inertia(1, 1) == m && in.inertia(2, 2) == m) found.push_back(&link);
+    }
+    if (found.empty()) return;
+    const Inertial& first = *found.front()->inertial;
+    Diagnostic& d = out.report(first.inertia_span, Severity::Info,
+                               found.size() == 1
+                                   ? fmt::format("link '{}' has mass {} kg and inertia {} kg·m²: placeholder values",
+                                                 found.front()->name.text, format_number(first.mass.value),
+                                                 format_number(first.mass.value))
+                                   : fmt::format("{} links have a mass equal to each moment of inertia (first: {}): "
+                                                 "placeholder values",
+                                                 found.size(), format_number(first.mass.value)));
+    d.note(fmt::format("The radius of gyration √(I/m) is then 1 m whatever the mass, far larger than the link; every "
+                       "natural-frequency estimate √(k/I) that uses it is wrong."));
+    if (found.size() > 1) {
+      std::string names;
+      for (std::size_t i = 0; i < found.size() && i < 5; ++i) names += fmt::format("{}'{}'", i ? ", " : "", found[i]->name.text);
+      d.note(fmt::format("They include {}{}.", names, found.size() > 5 ? fmt::format(" and {} more", found.size() - 5) : ""));
+    }
+    d.note("Take mass and inertia from CAD, or leave the links out of tuning until they are measured.");
+  }
+
   // A body that moves needs mass: without an inertial the importer invents one.
   static void check_bodies(const std::vector<RigidBody>& bodies, Reporter& out) {
     for (const RigidBody& body : bodies) {

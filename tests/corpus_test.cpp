@@ -91,9 +91,19 @@ TEST_CASE("corpus: real findings on real files", "[corpus]") {
 
   // PHYSICS.md §4: the ros-industrial 2F-85 mimic with multiplier −1 and limits [0, 0.8757].
   FileReport ri = lint("robotiq2f85__rosindustrial_arg2f_85_model.urdf");
-  const Diagnostic* conflict = find(ri, "mimic-limit-conflict", "maps through the mimic (multiplier -1, offset 0) to [-0.8, 0]");
+  const Diagnostic* conflict = find(ri, "mimic-limit-conflict", "must reach [-0.8, 0] rad to follow 'finger_joint'");
   REQUIRE(conflict);
-  CHECK(conflict->message.find("outside the limits [0, 0.8757]") != std::string::npos);
+  CHECK(conflict->message.find("outside its limits [0, 0.8757]") != std::string::npos);
+  // The sign error is mirrored, as the pybullet copy of the same model has it (issue 15).
+  REQUIRE(conflict->fix);
+  CHECK(conflict->fix->title.find("mirror the limits") == 0);
+  CHECK(conflict->fix->title.find("to [-0.8757, 0] rad") != std::string::npos);
+  // The H1 thumb: the leader's [-0.1, 0.6] narrows to [0, 0.5], which both followers hold.
+  const FileReport h1 = lint("humanoid__unitree_h1_with_hand.urdf");
+  const Diagnostic* thumb = find(h1, "mimic-limit-conflict", "'L_thumb_intermediate_joint' must reach");
+  REQUIRE(thumb);
+  REQUIRE(thumb->fix);
+  CHECK(thumb->fix->title == "narrow the limits of 'L_thumb_proximal_pitch_joint' to [0, 0.5] rad");
 
   // Placeholder limits: iCub's 50000 rad/s on 20 joints is one info (one verdict per value),
   // R2's 1e7 N·m efforts.

@@ -244,17 +244,20 @@ TEST_CASE("mimic-limit-conflict: the ros-industrial 2F-85 mimic limits [0, 0.875
   CHECK(d.severity == Severity::Error);
   CHECK(d.span.line == 33);
   CHECK(d.span.column == 19);
-  CHECK(d.message ==
-        "range [0, 0.8] rad of 'finger_joint' maps through the mimic (multiplier -1, offset 0) to [-0.8, 0] rad, "
-        "outside the limits [0, 0.8757] of revolute joint 'finger_tip_joint': the joint limit fights the mimic "
-        "constraint");
+  CHECK(d.message == "'finger_tip_joint' must reach [-0.8, 0] rad to follow 'finger_joint', outside its limits [0, "
+                     "0.8757] rad");
+  REQUIRE(d.notes.size() == 3);
+  CHECK(d.notes[0].message ==
+        "'finger_joint' moves over [0, 0.8] rad; the mimic (multiplier -1, offset 0) maps that to [-0.8, 0] rad.");
+  // A sign error first (issue 15): the mirrored limits [-0.8757, 0] hold the mapped range.
   REQUIRE(d.fix);
-  CHECK(d.fix->title == "widen the limits to [-0.8, 0.8757] rad");
+  CHECK(d.fix->title == "mirror the limits of 'finger_tip_joint' to [-0.8757, 0] rad");
   CHECK(d.fix->applicability == Applicability::Unsafe);
-  REQUIRE(d.fix->edits.size() == 1);
+  REQUIRE(d.fix->edits.size() == 2);
   CHECK(d.fix->edits[0].offset == offset_of(text, R"(<limit lower="0" upper="0.8757")", "0"));
-  CHECK(d.fix->edits[0].length == 1);
-  CHECK(d.fix->edits[0].replacement == "-0.8");
+  CHECK(d.fix->edits[0].replacement == "-0.8757");
+  CHECK(d.fix->edits[1].offset == offset_of(text, R"(<limit lower="0" upper="0.8757")", "0.8757"));
+  CHECK(d.fix->edits[1].replacement == "0");
 }
 
 TEST_CASE("mimic-limit-conflict: offsets shift the mapped range; tolerance option", "[rules]") {
@@ -263,15 +266,15 @@ TEST_CASE("mimic-limit-conflict: offsets shift the mapped range; tolerance optio
   text = with(text, kMimicLimit, R"(<limit lower="0" upper="0.820305" effort="4" velocity="2.9"/>)");
   const auto found = of_rule(lint(text), "mimic-limit-conflict");
   REQUIRE(found.size() == 1);
-  CHECK(found[0].message ==
-        "range [0, 0.820305] rad of 'finger_joint' maps through the mimic (multiplier 1, offset 0.1) to [0.1, "
-        "0.920305] rad, outside the limits [0, 0.820305] of revolute joint 'finger_tip_joint': the joint limit "
-        "fights the mimic constraint");
+  CHECK(found[0].message == "'finger_tip_joint' must reach [0.1, 0.920305] rad to follow 'finger_joint', outside its "
+                             "limits [0, 0.820305] rad");
+  // No sign error; the follower holds the leader over [0, 0.720305]: narrow the leader rather
+  // than push the follower past its stops.
   REQUIRE(found[0].fix);
   REQUIRE(found[0].fix->edits.size() == 1);
-  CHECK(found[0].fix->edits[0].offset == offset_of(text, R"(upper="0.820305" effort="4")", "0.820305"));
-  CHECK(found[0].fix->edits[0].replacement == "0.920305");
-  CHECK(found[0].fix->title == "widen the limits to [0, 0.920305] rad");
+  CHECK(found[0].fix->edits[0].offset == offset_of(text, R"(upper="0.820305" effort="24")", "0.820305"));
+  CHECK(found[0].fix->edits[0].replacement == "0.720305");
+  CHECK(found[0].fix->title == "narrow the limits of 'finger_joint' to [0, 0.720305] rad");
 
   // 5e-5 rad of overhang is inside the default tolerance (1e-4) but not inside 1e-6.
   const std::string close = gripper(kMimicLimit, R"(<limit lower="-0.820255" upper="0" effort="4" velocity="2.9"/>)");
@@ -280,7 +283,7 @@ TEST_CASE("mimic-limit-conflict: offsets shift the mapped range; tolerance optio
   strict.rule_options["mimic-limit-conflict"]["tolerance"] = 1e-6;
   const auto strict_found = of_rule(lint(close, strict), "mimic-limit-conflict");
   REQUIRE(strict_found.size() == 1);
-  CHECK(strict_found[0].fix->edits.at(0).replacement == "-0.820305");
+  CHECK(strict_found[0].fix->title == "narrow the limits of 'finger_joint' to [0, 0.820255] rad");
 }
 
 TEST_CASE("limits-inverted: lower above upper, with a swap fix", "[rules]") {
