@@ -320,7 +320,7 @@ TEST_CASE("report: --statistics counts findings per rule, most frequent first", 
   CHECK(doc[0]["rule"] == "limits-inverted");
   CHECK(doc[0]["count"] == 1);
   CHECK(doc[1]["rule"] == "mimic-max-velocity");
-  CHECK(doc[1]["fixable"] == 1);
+  CHECK(doc[1]["fixable"] == 0);  // raising a velocity limit is an unsafe fix (issue 15)
   CHECK(run_cli({"--statistics", "--output-format", "sarif", "a.urdf"}, dir.path()).exit_code == 2);
 }
 

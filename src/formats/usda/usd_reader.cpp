@@ -173,13 +173,28 @@ class Reader {
     return v;
   }
 
-  // Attributes authored for schemas the prim does not apply: one note per schema.
+  // A value left at zero: what a tool writes when it switches a drive off (Robotiq's mimic
+  // joints keep stiffness/damping/maxForce = 0 under `delete apiSchemas`).
+  static bool zeroed(const AttributeOpinion& a) {
+    if (!a.attribute->default_value) return false;
+    auto values = a.attribute->default_value->as_numbers();
+    if (!values) {
+      auto single = a.attribute->default_value->as_double();
+      if (!single) return false;
+      values = std::vector<double>{*single};
+    }
+    return std::all_of(values->begin(), values->end(), [](double v) { return v == 0.0; });
+  }
+
+  // Attributes authored for schemas the prim does not apply: one finding per schema. Zeroed
+  // leftovers of a deleted schema are harmless and not reported.
   void check_stale(const ComposedPrim& prim) {
     std::map<std::string, std::vector<AttributeOpinion>> by_schema;
     std::vector<std::string> order;
     for (const AttributeOpinion& a : prim.attributes()) {
       std::string schema = schema_of(a.attribute->name);
       if (schema.empty() || prim.has_api_schema(schema)) continue;
+      if (prim.schema_deleted(schema) && zeroed(a)) continue;
       auto& list = by_schema[schema];
       if (list.empty()) order.push_back(schema);
       list.push_back(a);
@@ -190,11 +205,21 @@ class Reader {
       for (const AttributeOpinion& a : attrs) names += (names.empty() ? "'" : ", '") + a.attribute->name + "'";
       const bool deleted = prim.schema_deleted(schema);
       report(rules::kStaleSchemaAttribute, attrs.front().attribute->name_span,
-             fmt::format("{} {} authored on '{}' but {} {}: PhysX ignores {}", names,
-                         attrs.size() == 1 ? "is" : "are", prim.path, schema,
-                         deleted ? "is removed by `delete apiSchemas`" : "is not applied",
-                         attrs.size() == 1 ? "it" : "them"));
+             fmt::format("{} on '{}' is {}: PhysX ignores {}", schema, leaf_name(prim.path),
+                         deleted ? "deleted" : "not applied",
+                         attrs.size() == 1 ? "its attribute" : fmt::format("its {} attributes", attrs.size())));
+      Diagnostic& d = result_.diagnostics.back();
+      d.note(fmt::format("{} {} authored on '{}', but {} {}.", names, attrs.size() == 1 ? "is" : "are", prim.path,
+                         schema, deleted ? "is removed by `delete apiSchemas`" : "is not applied"));
+      d.note(deleted ? "They record what someone meant before switching the schema off; delete them, or apply the "
+                       "schema again if they should act."
+                     : "Apply the schema if they should act, or delete them.");
     }
+  }
+
+  static std::string_view leaf_name(std::string_view path) {
+    const auto slash = path.rfind('/');
+    return slash == std::string_view::npos ? path : path.substr(slash + 1);
   }
 
   void read_link(const ComposedPrim& prim) {
