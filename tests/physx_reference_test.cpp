@@ -16,13 +16,8 @@
 
 #include "test_support.h"
 
-// The drive model (src/physics/drive_row.h) is being written beside this test; until it is on
-// the branch, the model comparison below reports that it is missing instead of running.
-#if __has_include("physics/drive_row.h")
-#define ASSET_LINT_HAS_DRIVE_MODEL 1
 #include "physics/drive_row.h"
 #include "physics/step.h"
-#endif
 
 using assetlint::test::read_file;
 using assetlint::test::source_dir;
@@ -151,7 +146,6 @@ TEST_CASE("physx reference: the stops are hard and the holds steady", "[physx]")
   }
 }
 
-#ifdef ASSET_LINT_HAS_DRIVE_MODEL
 namespace {
 
 namespace physics = assetlint::physics;
@@ -221,10 +215,3 @@ TEST_CASE("physx reference: the frame stepper moves the joint as PhysX does", "[
   }
 }
 
-#else
-
-TEST_CASE("physx reference: the drive model against PhysX", "[physx]") {
-  WARN("src/physics/drive_row.h is not on this branch yet: the drive model is not compared with PhysX");
-}
-
-#endif
