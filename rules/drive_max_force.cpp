@@ -115,11 +115,14 @@ class DriveMaxForce final : public Rule {
     const std::string unit(unit_symbol(c.required->unit));
     if (q.value >= need * (1 - 1e-9) && q.value <= need * excess) return;
     const bool below = q.value < need;
+    // The primary line quotes the value in model units; a scaled stage's literal goes in a note.
+    const std::string value = fmt::format("{} {}", format_number(q.value, 4), unit);
     Diagnostic& d = c.out.report(
-        q.span, below ? fmt::format("{} {} of {} is below the {} {} the payload spec needs", c.what(), describe(q),
+        q.span, below ? fmt::format("{} {} of {} is below the {} {} the payload spec needs", c.what(), value,
                                     joint_label(c.joint), format_number(need, 4), unit)
-                      : fmt::format("{} {} of {} is {}× the {} {} the payload spec needs", c.what(), describe(q),
+                      : fmt::format("{} {} of {} is {}× the {} {} the payload spec needs", c.what(), value,
                                     joint_label(c.joint), format_number(q.value / need, 3), format_number(need, 4), unit));
+    if (describe(q) != value) d.note(fmt::format("As written: {} {}.", c.what(), describe(q)));
     if (!below) {
       d.note(fmt::format("A bound more than excess_factor {}× the spec's makes the simulated gripper that much stronger "
                          "than the real one: it holds payloads the real one drops.",

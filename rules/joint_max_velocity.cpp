@@ -96,9 +96,9 @@ class JointMaxVelocity final : public Rule {
     const double tolerance = rule_option(info_static(), c.settings, "tolerance_factor");
     const double ratio = v.value / c.wanted->velocity;
     if (ratio <= tolerance && ratio >= 1.0 / tolerance) return;
-    Diagnostic& d = c.out.report(v.span, fmt::format("max joint velocity {} of {} is {}× the spec's {}", describe(v),
-                                                     joint_label(c.joint), format_number(ratio, 3),
-                                                     describe(c.wanted->velocity, v.unit)));
+    Diagnostic& d = c.out.report(v.span, fmt::format("max joint velocity of {} is {}× what the spec gives",
+                                                     joint_label(c.joint), format_number(ratio, 3)));
+    d.note(fmt::format("Authored {}; the spec gives {}.", describe(v), describe(c.wanted->velocity, v.unit)));
     d.note(fmt::format("The spec: {}.", c.wanted->derivation));
     d.note(fmt::format("Reported beyond tolerance_factor {}× either way.", format_number(tolerance)));
     const auto sharing = joints_sharing(c.asset, c.joint, &Joint::velocity);

@@ -39,9 +39,8 @@ class MimicMaxVelocity final : public Rule {
         // At or above the bound the clamp never acts: harmless, only not what the guide does.
         // URDF has no "unset" (urdfdom requires velocity), so there it passes.
         Diagnostic& d = out.report(velocity.span, Severity::Info,
-                                   fmt::format("mimic {} sets max joint velocity {}: unnecessary; the guide leaves "
-                                               "it unset",
-                                               joint_label(joint), describe(velocity)));
+                                   fmt::format("mimic {} sets a max joint velocity: unnecessary", joint_label(joint)));
+        d.note(fmt::format("It sets {}; the guide leaves max joint velocity unset on mimic joints.", describe(velocity)));
         if (reference_velocity)
           d.note(reference->name.span, fmt::format("'{}' is limited to {}, which bounds this joint at {} through "
                                                    "gearing {}: the clamp never acts.",
@@ -59,9 +58,9 @@ class MimicMaxVelocity final : public Rule {
   static void report_too_low(const Joint& joint, const Joint& reference, const Quantity& reference_velocity,
                              double needed, bool usd, Reporter& out) {
     const Quantity& velocity = *joint.velocity;
-    Diagnostic& d = out.report(velocity.span, fmt::format("mimic {} is limited to {}, below the {} its gearing demands",
-                                                          joint_label(joint), describe(velocity),
-                                                          describe(needed, velocity.unit)));
+    Diagnostic& d = out.report(velocity.span, fmt::format("mimic {} is limited below the velocity its gearing demands",
+                                                          joint_label(joint)));
+    d.note(fmt::format("Its own limit is {}; it must reach {}.", describe(velocity), describe(needed, velocity.unit)));
     d.note(reference.name.span,
            fmt::format("'{}' is limited to {}; through |multiplier {}| this joint must reach {}.", reference.name.text,
                        describe(reference_velocity), format_number(joint.mimic->multiplier.authored),

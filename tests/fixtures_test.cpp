@@ -86,3 +86,17 @@ TEST_CASE("the bundled Robotiq 2F-85 tells the guide's story: 5700 N·m/rad is t
   CHECK(text.find("275 N·m/rad") != std::string::npos);
   CHECK(text.find("0.06089 N·m·s/rad") != std::string::npos);
 }
+
+TEST_CASE("every primary message is short; the numbers go in notes", "[fixtures][diagnostics]") {
+  std::size_t checked = 0;
+  for (const auto& file : fixture_assets()) {
+    for (const Diagnostic& d : lint_fixture(file).diagnostics) {
+      ++checked;
+      INFO(file.string() << ": [" << d.rule << "] " << d.message);
+      const auto characters = std::count_if(d.message.begin(), d.message.end(),
+                                            [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+      CHECK(static_cast<std::size_t>(characters) <= kMaxPrimaryMessage);
+    }
+  }
+  CHECK(checked > 50);
+}

@@ -207,10 +207,10 @@ TEST_CASE("mimic-max-velocity: a mimic limited to 1.0 rad/s under a 2.9 rad/s jo
   CHECK(d.severity == Severity::Warning);
   CHECK(d.span.line == 33);
   CHECK(d.span.column == 61);
-  CHECK(d.message == "mimic revolute joint 'finger_tip_joint' is limited to 1 rad/s, below the 2.9 rad/s its gearing "
-                     "demands");
-  REQUIRE(d.notes.size() == 2);
-  CHECK(d.notes[0].message == "'finger_joint' is limited to 2.9 rad/s; through |multiplier -1| this joint must reach "
+  CHECK(d.message == "mimic revolute joint 'finger_tip_joint' is limited below the velocity its gearing demands");
+  REQUIRE(d.notes.size() == 3);
+  CHECK(d.notes[0].message == "Its own limit is 1 rad/s; it must reach 2.9 rad/s.");
+  CHECK(d.notes[1].message == "'finger_joint' is limited to 2.9 rad/s; through |multiplier -1| this joint must reach "
                               "2.9 rad/s.");
   REQUIRE(d.fix);
   CHECK(d.fix->title == "raise the limit to 2.9 rad/s");
@@ -295,8 +295,8 @@ TEST_CASE("limits-inverted: lower above upper, with a swap fix", "[rules]") {
   CHECK(d.span.line == 27);
   CHECK(d.span.column == 19);
   CHECK(d.message ==
-        "revolute joint 'finger_joint' has lower limit 0.8203 rad above upper limit 0 rad: the joint has no valid "
-        "position");
+        "revolute joint 'finger_joint' has lower limit 0.8203 rad above upper limit 0 rad");
+  CHECK(d.notes.at(0).message == "The joint has no valid position: every pose violates one of its limits.");
   REQUIRE(d.fix);
   CHECK(d.fix->applicability == Applicability::Unsafe);
   REQUIRE(d.fix->edits.size() == 2);

@@ -287,8 +287,9 @@ def PhysicsRevoluteJoint "m" (
   CHECK(r.diagnostics[0].severity == Severity::Warning);
   CHECK(r.diagnostics[0].span.line == 7);
   CHECK(r.diagnostics[0].message ==
-        "'PhysxMimicJointAPI:transZ' on '/m': the mimic joint instance must be rotX, rotY or rotZ; PhysX silently "
-        "ignores 'transZ', so this joint is not coupled");
+        "'PhysxMimicJointAPI:transZ' on '/m': not a mimic instance, so the joint is not coupled");
+  CHECK(r.diagnostics[0].notes.at(0).message ==
+        "A mimic joint instance must be rotX, rotY or rotZ; PhysX silently ignores 'transZ'.");
   CHECK(r.diagnostics[1].rule == "stale-schema-attribute");
   CHECK(r.diagnostics[1].severity == Severity::Info);
   CHECK(r.diagnostics[1].span.line == 10);

@@ -289,12 +289,13 @@ class Composer {
         return std::find(active.begin(), active.end(), t.prim) != active.end();
       });
       if (cycle) {
-        report(a.arc.span, Severity::Warning,
-               fmt::format("reference cycle: the arc on '{}' leads back to prim '{}'{}, which '{}' is already "
-                           "composed from; the arc is ignored",
-                           path, target_path, a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset),
-                           path),
-               path);
+        Diagnostic* d = report(a.arc.span, Severity::Warning,
+                               fmt::format("reference cycle: the arc on '{}' leads back to '{}'; ignored", path, target_path),
+                               path);
+        if (d)
+          d->note(fmt::format("'{}' is already composed from prim '{}'{}: USD refuses such an arc, so whatever it "
+                              "was meant to bring in is missing in the simulator too.",
+                              path, target_path, a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset)));
         continue;
       }
       for (const SpecRef& t : targets) active.push_back(t.prim);

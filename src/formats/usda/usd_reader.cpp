@@ -445,9 +445,8 @@ class Reader {
       const Span span = prim.schema_span(schema);
       if (!is_rot_instance(inst)) {
         report(rules::kMimicAxisInstance, span,
-               fmt::format("'{}' on '{}': the mimic joint instance must be rotX, rotY or rotZ; PhysX silently ignores "
-                           "'{}', so this joint is not coupled",
-                           schema, prim.path, inst));
+               fmt::format("'{}' on '{}': not a mimic instance, so the joint is not coupled", schema, prim.path),
+               {fmt::format("A mimic joint instance must be rotX, rotY or rotZ; PhysX silently ignores '{}'.", inst)});
         continue;
       }
       if (joint.mimic) continue;
