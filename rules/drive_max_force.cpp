@@ -94,15 +94,11 @@ class DriveMaxForce final : public Rule {
   // URDF effort ≤ 0: what it means depends on who reads the file. 0 and Gazebo's −1 are
   // conventions; any other negative number is a slip.
   void sentinel(const Context& c, const Quantity& q) const {
-    const bool convention = q.value == 0 || q.value == -1;
-    Diagnostic& d = c.out.report(
-        q.span, c.required || !convention ? Severity::Warning : Severity::Info,
-        convention ? fmt::format("effort {} of {} is a sentinel: unbounded in Isaac Sim{}", describe(q), c.label(),
-                                 q.value == 0 ? ", zero elsewhere" : " and Gazebo, negative elsewhere")
-                   : fmt::format("effort {} of {} is negative", describe(q), c.label()));
-    d.note("Isaac Sim's URDF importer reads effort ≤ 0 as no limit (it writes maxForce = FLT_MAX); urdfdom-based "
-           "tools (ROS controllers, Gazebo through SDFormat) read 0 as a zero force, and Gazebo reads −1 as no limit.");
-    if (!convention) d.note("No consumer reads a negative bound other than −1 as a force limit: a sign slip?");
+    Diagnostic& d = report_sentinel(
+        c, q, "effort", c.required != nullptr,
+        "Isaac Sim's URDF importer reads effort ≤ 0 as no limit (it writes maxForce = FLT_MAX); urdfdom-based "
+        "tools (ROS controllers, Gazebo through SDFormat) read 0 as a zero force, and Gazebo reads −1 as no limit.",
+        "force limit");
     if (c.required) {
       spec_notes(c, d);
       fix_to_spec(c, q, d);

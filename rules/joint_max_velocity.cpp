@@ -57,16 +57,12 @@ class JointMaxVelocity final : public Rule {
   // URDF velocity ≤ 0: what it means depends on who reads the file. 0 and Gazebo's −1 are
   // conventions; any other negative number is a slip.
   static void sentinel(const Context& c, const Quantity& v) {
-    const bool convention = v.value == 0 || v.value == -1;
-    Diagnostic& d = c.out.report(
-        v.span, c.wanted || !convention ? Severity::Warning : Severity::Info,
-        convention ? fmt::format("velocity {} of {} is a sentinel: unbounded in Isaac Sim{}", describe(v), c.label(),
-                                 v.value == 0 ? ", zero elsewhere" : " and Gazebo, negative elsewhere")
-                   : fmt::format("velocity {} of {} is negative", describe(v), c.label()));
-    d.note("Isaac Sim's URDF importer reads velocity ≤ 0 as no limit (it writes no max joint velocity); urdfdom-based "
-           "tools (ROS controllers, Gazebo through SDFormat) read 0 as a joint that may not move, and Gazebo reads −1 "
-           "as no limit.");
-    if (!convention) d.note("No consumer reads a negative bound other than −1 as a speed limit: a sign slip?");
+    Diagnostic& d = report_sentinel(
+        c, v, "velocity", c.wanted != nullptr,
+        "Isaac Sim's URDF importer reads velocity ≤ 0 as no limit (it writes no max joint velocity); urdfdom-based "
+        "tools (ROS controllers, Gazebo through SDFormat) read 0 as a joint that may not move, and Gazebo reads −1 "
+        "as no limit.",
+        "speed limit");
     if (c.wanted) d.note(fmt::format("The spec gives {}: {}.", describe(c.wanted->velocity, c.file_unit()), c.wanted->derivation));
     spec_fix(c, v, d);
   }

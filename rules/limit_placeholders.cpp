@@ -1,5 +1,7 @@
 #include "rules/limit_placeholders.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "rules/support.h"
@@ -36,5 +38,19 @@ bool has_active_drive(const Joint& joint) {
 }
 
 std::string LimitCheck::label() const { return (driven ? "driven " : "") + joint_label(joint); }
+
+Diagnostic& report_sentinel(const LimitCheck& c, const Quantity& q, std::string_view what, bool judged,
+                            std::string_view consumers, std::string_view bound_kind) {
+  const bool convention = q.value == 0 || q.value == -1;
+  Diagnostic& d = c.out.report(
+      q.span, judged || !convention ? Severity::Warning : Severity::Info,
+      convention ? fmt::format("{} {} of {} is a sentinel: unbounded in Isaac Sim{}", what, describe(q), c.label(),
+                               q.value == 0 ? ", zero elsewhere" : " and Gazebo, negative elsewhere")
+                 : fmt::format("{} {} of {} is negative", what, describe(q), c.label()));
+  d.note(std::string(consumers));
+  if (!convention)
+    d.note(fmt::format("No consumer reads a negative bound other than −1 as a {}: a sign slip?", bound_kind));
+  return d;
+}
 
 }  // namespace assetlint::rules

@@ -2,6 +2,7 @@
 // Round limit values repeated across joints: what an author writes when the real number
 // is unknown (effort="1000" on a gripper's driven joint and every mimic, velocity="100"
 // on every joint of a hand). Their meaning is "not set", not a spec.
+#include <string_view>
 #include <vector>
 
 #include "engine/rule.h"
@@ -32,5 +33,11 @@ struct LimitCheck {
   Reporter& out;
   std::string label() const;  // "driven revolute joint 'J0'" / "revolute joint 'J0'"
 };
+
+// A URDF limit ≤ 0 (`what`: "effort" or "velocity"): 0 and Gazebo's −1 are conventions
+// whose meaning depends on the consumer (`consumers` says how each reads it); any other
+// negative number is a slip. A warning when judged against a spec or a slip, else an info.
+Diagnostic& report_sentinel(const LimitCheck& c, const Quantity& q, std::string_view what, bool judged,
+                            std::string_view consumers, std::string_view bound_kind);
 
 }  // namespace assetlint::rules
