@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "cli/rule_docs.h"
+#include "commands/tune.h"
 #include "config/resolver.h"
 #include "engine/linter.h"
 #include "fix/command.h"
@@ -88,6 +89,7 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
     }
     return show_rule(args[1], out, err);
   }
+  if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "check") args.erase(args.begin());
 
   CLI::App app{"asset-lint: checks robot assets (URDF, USDA) against PhysX joint-tuning guidance", "asset-lint"};

@@ -128,6 +128,7 @@ class Loader {
       if (k == "payload_kg") g.payload_kg = positive(node, k);
       else if (k == "friction") g.friction = positive(node, k);
       else if (k == "lever_arm_m") g.lever_arm_m = positive(node, k);
+      else if (k == "torque_margin") g.torque_margin = positive(node, k);
       else if (k == "gravity") g.gravity = *positive(node, k);
       else if (k == "finger_speed_m_s") g.finger_speed_m_s = positive(node, k);
       else if (k == "stroke_m") g.stroke_m = positive(node, k);

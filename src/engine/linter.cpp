@@ -115,6 +115,23 @@ FileReport lint_file(const std::string& path, const Settings& settings, const Fi
   return lint_text(path, std::move(*text), settings, files);
 }
 
+LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files) {
+  LoadedAsset loaded;
+  if (file_kind(path) == FileKind::Unsupported) {
+    loaded.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf and .usda files)", extension_of(path));
+    return loaded;
+  }
+  std::string error;
+  std::optional<std::string> text = files.read(path, error);
+  if (!text) {
+    loaded.error = fmt::format("cannot read '{}': {}", path, error);
+    return loaded;
+  }
+  loaded.read = read(path, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);
+  if (loaded.read.usable) config::apply_drive_settings(loaded.read.asset, settings);
+  return loaded;
+}
+
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs) {
   return lint_files(paths, [&](const std::string&) -> const Settings& { return settings; }, jobs);
 }

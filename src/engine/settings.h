@@ -38,6 +38,8 @@ struct GripperSpec {
   std::optional<Configured<double>> payload_kg;
   std::optional<Configured<double>> friction;
   std::optional<Configured<double>> lever_arm_m;
+  // Round the per-joint torque up to a multiple of this many N·m (the guide: 3.33 → 4 with 1).
+  std::optional<Configured<double>> torque_margin;
   Configured<double> gravity{9.81, "default"};
   std::optional<Configured<double>> finger_speed_m_s;
   std::optional<Configured<double>> stroke_m;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "physics/drive.h"
+#include "physics/sizing.h"
 #include "util/numbers.h"
 
 namespace assetlint::physics {
@@ -24,7 +25,8 @@ std::optional<RequiredForce> required_force(const Asset& asset, const Settings& 
   RequiredForce f;
   f.grip_force = g.payload_kg->value * g.gravity.value / g.friction->value;
   f.per_finger = f.grip_force / 2.0;
-  f.per_joint = f.per_finger * g.lever_arm_m->value;
+  f.torque = f.per_finger * g.lever_arm_m->value;
+  f.per_joint = round_up_to_multiple(f.torque, g.torque_margin ? g.torque_margin->value : 0.0);
   f.joints = coupled_joints(asset, driven).size();
   f.required = f.per_joint * static_cast<double>(f.joints);
   f.derivation = fmt::format(
@@ -32,7 +34,10 @@ std::optional<RequiredForce> required_force(const Asset& asset, const Settings& 
       "driven through '{}' = {} N·m",
       format_number(g.payload_kg->value), format_number(g.gravity.value), format_number(g.friction->value),
       format_number(f.grip_force, 4), format_number(f.per_finger, 4), format_number(g.lever_arm_m->value),
-      format_number(f.per_joint, 3), f.joints, f.joints == 1 ? "" : "s", driven.name.text, format_number(f.required, 3));
+      f.per_joint == f.torque
+          ? format_number(f.per_joint, 3)
+          : fmt::format("{} (rounded up to {})", format_number(f.torque, 3), format_number(f.per_joint, 3)),
+      f.joints, f.joints == 1 ? "" : "s", driven.name.text, format_number(f.required, 3));
   return f;
 }
 
@@ -42,7 +47,7 @@ std::optional<RequiredVelocity> required_velocity(const Settings& settings, cons
   const double range = driven.upper->value - driven.lower->value;
   if (range <= 0) return std::nullopt;
   RequiredVelocity v;
-  v.close_time = g.stroke_m->value / 2.0 / g.finger_speed_m_s->value;
+  v.close_time = close_time(g.stroke_m->value, g.finger_speed_m_s->value);
   v.velocity = range / v.close_time;
   const char* unit = is_angular(driven.type) ? "rad" : "m";
   v.derivation = fmt::format("{} m stroke / 2 per finger at {} m/s closes in {} s; {} {} range / {} s = {} {}/s",

@@ -15,7 +15,8 @@ const Joint* spec_joint(const Asset& asset, const Settings& settings);
 struct RequiredForce {
   double grip_force = 0;       // N, both fingers: m·g/μ
   double per_finger = 0;       // N
-  double per_joint = 0;        // N·m: per finger × lever arm
+  double torque = 0;           // N·m: per finger × lever arm
+  double per_joint = 0;        // N·m: torque rounded up to [gripper] torque_margin (when set)
   std::size_t joints = 0;      // the drive moves itself plus its mimics
   double required = 0;         // N·m on the driven joint
   std::string derivation;      // "5 kg × 10 m/s² / μ 0.3 = 166.7 N; …"
