@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands/tune_derivation.h"
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "test_support.h"
 
 using namespace assetlint;

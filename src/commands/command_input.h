@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "engine/settings.h"
 
 namespace assetlint::commands {

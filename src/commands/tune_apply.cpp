@@ -8,7 +8,7 @@
 #include "config/config.h"
 #include "config/toml_edit.h"
 #include "engine/file_system.h"
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "fix/diff.h"
 #include "fix/edits.h"
 #include "fix/fixer.h"
