@@ -117,7 +117,7 @@ TEST_CASE("tune --apply on USD: per-degree gains, max force and velocity, none o
     text.replace(at, from.size(), to);
   };
   replace("drive:angular:physics:stiffness = 4.8", "drive:angular:physics:stiffness = 99.48");
-  replace("float drive:angular:physics:maxForce = 24\n", "");
+  replace("            float drive:angular:physics:maxForce = 24\n", "");
   replace("physxJoint:maxJointVelocity = 166.16", "physxJoint:maxJointVelocity = 50");
   // One mimic with the max joint velocity the guide says to leave unset.
   replace("prepend apiSchemas = [\"PhysxMimicJointAPI:rotX\"]\n        )\n        {\n            uniform token "

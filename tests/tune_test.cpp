@@ -96,7 +96,7 @@ TEST_CASE("tune: the guide's numbers on the URDF fixture", "[tune]") {
   CHECK(grip.inputs[0].origin == "--payload-kg");
   CHECK(grip.inputs[1].origin == "--gravity");
   const auto& velocity = step(d, "max_joint_velocity");
-  CHECK(velocity.inputs[1].origin.ends_with("robotiq_2f85.urdf:64"));  // <limit upper>
+  CHECK(velocity.inputs[1].origin.ends_with("robotiq_2f85.urdf:61"));  // <limit upper>
   CHECK(step(d, "current_natural_frequency").inputs[0].origin == "asset-lint.toml:2");
   CHECK(d.recommended.max_force == 24.0);
   CHECK(*d.recommended.stiffness == Approx(275.0).epsilon(1e-3));
@@ -127,7 +127,7 @@ TEST_CASE("tune: missing spec inputs name their key and flag; other steps still 
   // The inertia comes from the asset alone; the stiffness from the asset's effort (24 N·m).
   CHECK(result(d, "effective_inertia") == Approx(3.37e-6).epsilon(1e-6));
   CHECK(result(d, "stiffness") == Approx(275.0).epsilon(1e-3));
-  CHECK(step(d, "stiffness").inputs[0].origin.ends_with("robotiq_2f85.urdf:57"));
+  CHECK(step(d, "stiffness").inputs[0].origin.ends_with("robotiq_2f85.urdf:61"));
 }
 
 TEST_CASE("tune: the command prints every step and the JSON summary", "[tune][cli]") {
@@ -201,7 +201,7 @@ TEST_CASE("tune: bad input is one line naming it, exit 2", "[tune][cli]") {
   auto mimic = run_cli({"tune", kUrdf, "--joint", "left_inner_knuckle_joint"});
   CHECK(mimic.exit_code == 2);
   CHECK(mimic.err == "asset-lint tune: error: " + kUrdf +
-                         ": --joint names 'left_inner_knuckle_joint', a mimic of 'finger_joint': tune the joint it "
+                         ": --joint names 'left_inner_knuckle_joint', a mimic of 'finger_joint': name the joint it "
                          "follows\n");
   for (const char* bad : {"0", "-5", "nan", "inf", "abc"}) {
     auto r = run_cli({"tune", kUrdf, "--payload-kg", bad});

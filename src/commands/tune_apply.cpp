@@ -56,6 +56,7 @@ class Planner {
                           std::move(changes_[file])};
       if (planned.updated != planned.original) plan_.files.push_back(std::move(planned));
     }
+    if (asset_.format == SourceFormat::Urdf) config_table();
     check_still_parses();
     return std::move(plan_);
   }
@@ -94,7 +95,6 @@ class Planner {
     };
     if (r.max_force) limit_attribute(joint_.effort, r.max_force, "effort", force_text(*r.max_force));
     if (r.max_velocity) limit_attribute(joint_.velocity, r.max_velocity, "velocity", velocity_text(*r.max_velocity));
-    config_table();
   }
 
   // [drives.<joint>] of the nearest asset-lint.toml (or --config's), created beside the

@@ -476,7 +476,7 @@ const Joint* tune_joint(const Asset& asset, const Settings& settings, const std:
       return nullptr;
     }
     if (joint->is_mimic()) {
-      error = fmt::format("{} names '{}', a mimic of '{}': tune the joint it follows", source, name,
+      error = fmt::format("{} names '{}', a mimic of '{}': name the joint it follows", source, name,
                           joint->mimic->reference.text);
       return nullptr;
     }

@@ -9,8 +9,19 @@
 namespace assetlint::commands {
 namespace {
 
+// Width on screen: code points, not bytes ("N·m", "μ").
+std::size_t columns(std::string_view text) {
+  std::size_t n = 0;
+  for (unsigned char c : text) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
 std::string with_unit(double value, const std::string& unit, int digits = 4) {
   return unit.empty() ? format_number(value, digits) : fmt::format("{} {}", format_number(value, digits), unit);
+}
+
+std::string origin_text(const std::string& origin) {
+  return origin == "default" ? "the default (docs/tune.md)" : origin;
 }
 
 std::string result_text(const TuneResult& r) {
@@ -43,11 +54,12 @@ void write_tune_text(std::ostream& out, const TuneDerivation& d) {
     for (const TuneInput& in : step.inputs) {
       std::string value = fmt::format("{} = {}", in.symbol, with_unit(in.value, in.unit));
       if (!in.as_written.empty()) value += fmt::format(" ({})", in.as_written);
-      width = std::max(width, value.size());
+      width = std::max(width, columns(value));
       values.push_back(std::move(value));
     }
     for (std::size_t j = 0; j < step.inputs.size(); ++j)
-      out << fmt::format("     {:<{}}  {}, from {}\n", values[j], width, step.inputs[j].what, step.inputs[j].origin);
+      out << fmt::format("     {}{}  {}, from {}\n", values[j], std::string(width - columns(values[j]), ' '),
+                         step.inputs[j].what, origin_text(step.inputs[j].origin));
     for (const TuneMissing& m : step.missing) out << "     " << missing_text(m) << "\n";
     if (step.result) out << "   → " << result_text(*step.result) << "\n";
     else out << "   → not computed\n";

@@ -159,6 +159,7 @@ std::string render_svg(const Chart& chart) {
       kinds.push_back(s.dashed ? 1 : 0);
     }
     for (const auto& m : panel.markers) {
+      if (m.label.empty()) continue;  // a second line of the same marker (−max force)
       entries.emplace_back(m.color, m.label);
       kinds.push_back(1);
     }
