@@ -69,6 +69,23 @@ struct GuideUrdf {
   }
 };
 
+// The guide's numbers (PHYSICS.md §3) in the JSON summary.
+void check_guide_summary(const nlohmann::json& s) {
+  CHECK(s["grip_force_n"].get<double>() == Approx(166.667).epsilon(1e-5));
+  CHECK(s["force_per_finger_n"].get<double>() == Approx(83.333).epsilon(1e-5));
+  CHECK(s["torque_per_joint_nm"].get<double>() == 4.0);
+  CHECK(s["max_drive_force_nm"].get<double>() == 24.0);
+  CHECK(s["close_time_s"].get<double>() == Approx(0.2833).epsilon(1e-3));
+  CHECK(s["max_joint_velocity_rad_s"].get<double>() == Approx(2.895).epsilon(1e-3));
+  CHECK(s["effective_inertia_kgm2"].get<double>() == Approx(3.37e-6).epsilon(1e-6));
+  CHECK(s["current_natural_frequency_rad_s"].get<double>() == Approx(4.113e4).epsilon(1e-3));
+  CHECK(s["stiffness_nm_per_rad"].get<double>() == Approx(275.0).epsilon(1e-3));
+  CHECK(s["natural_frequency_rad_s"].get<double>() == Approx(9.03e3).epsilon(1e-3));
+  CHECK(s["damping_nms_per_rad"].get<double>() == Approx(0.0609).epsilon(2e-3));
+  CHECK(s["sim_rate_hz"].get<double>() == 250.0);
+  CHECK(s["position_iterations"].get<double>() == 64.0);
+}
+
 }  // namespace
 
 TEST_CASE("tune: the guide's numbers on the URDF fixture", "[tune]") {
@@ -146,20 +163,7 @@ TEST_CASE("tune: the command prints every step and the JSON summary", "[tune][cl
   auto json = run_cli(args);
   REQUIRE(json.exit_code == 0);
   const auto doc = nlohmann::json::parse(json.out);
-  const auto& s = doc["summary"];
-  CHECK(s["grip_force_n"].get<double>() == Approx(166.667).epsilon(1e-5));
-  CHECK(s["force_per_finger_n"].get<double>() == Approx(83.333).epsilon(1e-5));
-  CHECK(s["torque_per_joint_nm"].get<double>() == 4.0);
-  CHECK(s["max_drive_force_nm"].get<double>() == 24.0);
-  CHECK(s["close_time_s"].get<double>() == Approx(0.2833).epsilon(1e-3));
-  CHECK(s["max_joint_velocity_rad_s"].get<double>() == Approx(2.895).epsilon(1e-3));
-  CHECK(s["effective_inertia_kgm2"].get<double>() == Approx(3.37e-6).epsilon(1e-6));
-  CHECK(s["current_natural_frequency_rad_s"].get<double>() == Approx(4.113e4).epsilon(1e-3));
-  CHECK(s["stiffness_nm_per_rad"].get<double>() == Approx(275.0).epsilon(1e-3));
-  CHECK(s["natural_frequency_rad_s"].get<double>() == Approx(9.03e3).epsilon(1e-3));
-  CHECK(s["damping_nms_per_rad"].get<double>() == Approx(0.0609).epsilon(2e-3));
-  CHECK(s["sim_rate_hz"].get<double>() == 250.0);
-  CHECK(s["position_iterations"].get<double>() == 64.0);
+  check_guide_summary(doc["summary"]);
   CHECK(doc["steps"][0]["inputs"][0]["origin"] == "--payload-kg");
 }
 
@@ -176,15 +180,8 @@ TEST_CASE("tune: the USDA fixture gives the same numbers, with per-degree values
   auto r = run_cli(args, dir.path());
   REQUIRE(r.exit_code == 0);
   const auto doc = nlohmann::json::parse(r.out);
-  const auto& s = doc["summary"];
   CHECK(doc["joint"] == "/robotiq_2f85/joints/finger_joint");
-  CHECK(s["max_drive_force_nm"].get<double>() == 24.0);
-  CHECK(s["max_joint_velocity_rad_s"].get<double>() == Approx(2.895).epsilon(1e-3));
-  CHECK(s["effective_inertia_kgm2"].get<double>() == Approx(3.37e-6).epsilon(1e-6));
-  CHECK(s["current_natural_frequency_rad_s"].get<double>() == Approx(4.113e4).epsilon(1e-3));
-  CHECK(s["stiffness_nm_per_rad"].get<double>() == Approx(275.0).epsilon(1e-3));
-  CHECK(s["natural_frequency_rad_s"].get<double>() == Approx(9.03e3).epsilon(1e-3));
-  CHECK(s["damping_nms_per_rad"].get<double>() == Approx(0.0609).epsilon(2e-3));
+  check_guide_summary(doc["summary"]);
   for (const auto& step : doc["steps"]) {
     if (step["name"] == "stiffness") CHECK(step["result"]["usd_value"].get<double>() == Approx(4.8).epsilon(1e-3));
     if (step["name"] == "max_joint_velocity")
