@@ -107,7 +107,7 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   overrides.allow_outside_root = o.allow_outside_root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : o.paths)
-    if (std::filesystem::is_directory(path)) overrides.trees.push_back(path);
+    if (std::error_code ec; std::filesystem::is_directory(path, ec)) overrides.trees.push_back(path);
   return overrides;
 }
 

@@ -23,7 +23,8 @@ std::string plural(std::size_t n, std::string_view word) {
 
 }  // namespace
 
-void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options) {
+void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options,
+                const RunProblems& problems) {
   const char* bold = options.color ? "\033[1m" : "";
   const char* dim = options.color ? "\033[2m" : "";
   const char* reset = options.color ? "\033[0m" : "";
@@ -48,14 +49,21 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
   }
   if (!options.show_summary) return;
   const Summary s = summarize(reports);
+  // What was not looked at comes first: a run with I/O errors is never reported as clean.
+  std::string line;
+  if (!problems.errors.empty())
+    line = fmt::format("{} could not be read (errors above); ", plural(problems.errors.size(), "path"));
   if (s.total() == 0) {
-    out << fmt::format("No problems found in {}.\n", plural(s.files, "file"));
-    return;
+    line += fmt::format("{}o problems found in {}.", line.empty() ? "N" : "n", plural(s.files, "file"));
+  } else {
+    line += fmt::format("{}ound {} ({}, {}, {}) in {}.", line.empty() ? "F" : "f", plural(s.total(), "problem"),
+                        plural(s.errors, "error"), plural(s.warnings, "warning"), plural(s.infos, "info"),
+                        plural(s.files, "file"));
+    if (s.fixable || s.unsafe_fixable)
+      line += fmt::format(" {} fixable with --fix ({} more with --unsafe-fixes).", s.fixable, s.unsafe_fixable);
   }
-  std::string line = fmt::format("Found {} ({}, {}, {}) in {}.", plural(s.total(), "problem"), plural(s.errors, "error"),
-                                 plural(s.warnings, "warning"), plural(s.infos, "info"), plural(s.files, "file"));
-  if (s.fixable || s.unsafe_fixable)
-    line += fmt::format(" {} fixable with --fix ({} more with --unsafe-fixes).", s.fixable, s.unsafe_fixable);
+  if (problems.binary_usd)
+    line += fmt::format(" Skipped {} (asset-lint reads text USD).", plural(problems.binary_usd, "binary USD file"));
   out << line << "\n";
 }
 
