@@ -4,6 +4,7 @@
 
 #include "report/concise_reporter.h"
 #include "report/github_reporter.h"
+#include "report/gitlab_reporter.h"
 #include "report/json_reporter.h"
 #include "report/junit_reporter.h"
 #include "report/sarif_reporter.h"
@@ -25,6 +26,7 @@ commands::WriteReport report_writer(const Options& options, bool use_color, conf
     } else if (format == "json") write_json(out, reports, problems);
     else if (format == "concise") write_concise(out, reports);
     else if (format == "github") write_github(out, reports, problems);
+    else if (format == "gitlab") write_gitlab(out, reports);
     else if (format == "sarif") {
       std::error_code ec;
       write_sarif(out, reports, SarifOptions{std::filesystem::current_path(ec).string()}, problems);

@@ -31,9 +31,7 @@ int run_check(const PathExpansion& expansion, const SettingsFor& settings, const
   });
   write_report(reports, problems);
   if (!problems.errors.empty()) return kExitError;
-  for (const auto& report : reports)
-    if (!report.diagnostics.empty()) return kExitFindings;
-  return kExitClean;
+  return findings_status(reports, options.fail_on);
 }
 
 }  // namespace assetlint::commands

@@ -15,11 +15,13 @@ using WriteReport = std::function<void(const std::vector<FileReport>&, const Run
 
 struct CheckOptions {
   unsigned jobs = 1;
+  Severity fail_on = Severity::Warning;  // the least severe finding that fails the run
 };
 
 // Lints `expansion.files`, writes the reports with `write_report`, names every I/O
 // error on `err` (and in the report) and warns about directories without assets.
-// Returns 2 when a path or file could not be read, 1 when findings remain, 0 otherwise.
+// Returns 2 when a path or file could not be read, 1 when findings at or above
+// `options.fail_on` remain, 0 otherwise.
 // Names the expansion's errors on `err`, warns about directories without assets;
 // returns them for the report.
 RunProblems announce_expansion(const PathExpansion& expansion, std::ostream& err);

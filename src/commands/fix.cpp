@@ -111,13 +111,14 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
   }
 
   const bool failed = !run_problems.errors.empty();
-  if (options.diff) return failed ? kExitError : any_diff ? kExitFindings : kExitClean;
+  if (options.diff) {
+    if (!failed && !any_diff) err << "asset-lint: no fix applies; nothing to change\n";
+    return failed ? kExitError : any_diff ? kExitFindings : kExitClean;
+  }
   std::erase_if(remaining, [](const FileReport& r) { return r.error.has_value(); });
   write_report(remaining, run_problems);
   if (failed) return kExitError;
-  return std::all_of(remaining.begin(), remaining.end(), [](const FileReport& r) { return r.diagnostics.empty(); })
-             ? kExitClean
-             : kExitFindings;
+  return findings_status(remaining, options.fail_on);
 }
 
 }  // namespace assetlint::commands

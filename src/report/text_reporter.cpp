@@ -34,17 +34,18 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
       std::string marker;
       if (d.fix && d.fix->applicability == Applicability::Safe) marker = " (fixable)";
       else if (d.fix && d.fix->applicability == Applicability::Unsafe) marker = " (unsafe fix)";
-      out << fmt::format("{}{}:{}:{}:{} {}{}:{} {} {}[{}]{}{}\n", bold, path, d.span.line, d.span.column, reset,
-                         options.color ? severity_color(d.severity) : "", severity_name(d.severity), reset, d.message,
+      out << fmt::format("{}{}:{}:{}:{} {}{}:{} {} {}[{}]{}{}\n", bold, one_line(path), d.span.line, d.span.column, reset,
+                         options.color ? severity_color(d.severity) : "", severity_name(d.severity), reset,
+                         one_line(d.message),
                          dim, d.rule, marker, reset);
       for (const Note& note : d.notes) {
         if (note.span.valid())
-          out << fmt::format("  {}{}:{}:{}:{} {}note:{} {}\n", bold, note_path(report, note), note.span.line,
-                             note.span.column, reset, bold, reset, note.message);
+          out << fmt::format("  {}{}:{}:{}:{} {}note:{} {}\n", bold, one_line(note_path(report, note)),
+                             note.span.line, note.span.column, reset, bold, reset, one_line(note.message));
         else
-          out << fmt::format("  {}note:{} {}\n", bold, reset, note.message);
+          out << fmt::format("  {}note:{} {}\n", bold, reset, one_line(note.message));
       }
-      if (d.fix) out << fmt::format("  {}help:{} {}\n", bold, reset, help_line(*d.fix));
+      if (d.fix) out << fmt::format("  {}help:{} {}\n", bold, reset, one_line(help_line(*d.fix)));
     }
   }
   if (!options.show_summary) return;
