@@ -78,7 +78,7 @@ class Deriver {
       rate_.position_iterations = sim.position_iterations->value;
       rate_.iterations_origin = sim.position_iterations->origin;
     }
-    d_.simulation = fmt::format("{} solver, {}", rate_.solver, rate_.describe());
+    d_.simulation = rate_.describe();
   }
 
   TuneDerivation run() {
@@ -149,19 +149,21 @@ class Deriver {
     if (angular) ok = spec(torque, g.lever_arm_m, "r", "lever arm", "m", "lever_arm_m", "--lever-arm-m") && ok;
     if (g.torque_margin) torque.inputs.push_back(configured("margin", "torque margin", *g.torque_margin, "N·m"));
     if (ok && required) {
-      torque.result = TuneResult{required->per_joint, symbol(units_.force), {}, {}};
-      if (required->per_joint != required->torque)
+      const double per_joint = angular ? required->rounded_torque : required->per_finger;
+      torque.result = TuneResult{per_joint, symbol(units_.force), {}, {}};
+      if (angular && required->rounded_torque != required->per_joint_torque)
         torque.notes.push_back(fmt::format("{} N·m rounded up to a multiple of {} N·m: {} N·m.",
-                                           format_number(required->torque, 3), format_number(g.torque_margin->value),
-                                           format_number(required->per_joint, 4)));
+                                           format_number(required->per_joint_torque, 3), format_number(g.torque_margin->value),
+                                           format_number(required->rounded_torque, 4)));
       else if (!g.torque_margin && angular)
         torque.notes.push_back("Not rounded: [gripper] torque_margin (--torque-margin) is not set.");
     }
 
     TuneStep& total = add("max_drive_force", "max drive force on the driven joint",
-                          "τ_max = n · τ (the joint and every mimic it drives)");
+                          "τ_max = Σ|gearing| · τ (the joint, gearing 1, and every mimic it drives)");
     ok = from_step(total, "torque_per_joint", "τ", angular ? "torque per joint" : "force per joint");
-    total.inputs.push_back(TuneInput{"n", "joints moved by the drive", static_cast<double>(d_.mimics.size() + 1), "",
+    const double gearing_sum = required ? required->gearing_sum : static_cast<double>(d_.mimics.size() + 1);
+    total.inputs.push_back(TuneInput{"Σ|gearing|", "joints moved by the drive, each by its gearing", gearing_sum, "",
                                      fmt::format("the asset: '{}' and {} mimic joint{}", joint_.name.text,
                                                  d_.mimics.size(), d_.mimics.size() == 1 ? "" : "s"),
                                      {}});

@@ -116,6 +116,10 @@ class Loader {
         const double n = number(node, k, 1.0, false);
         if (n != std::floor(n) || n > 255) fail(node, "'position_iterations' must be a whole number from 1 to 255");
         settings_.simulation.position_iterations = Configured<double>{n, origin(node)};
+      } else if (k == "velocity_iterations") {
+        const double n = number(node, k, 0.0, false);
+        if (n != std::floor(n) || n > 255) fail(node, "'velocity_iterations' must be a whole number from 0 to 255");
+        settings_.simulation.velocity_iterations = Configured<double>{n, origin(node)};
       } else if (k == "solver") settings_.simulation.solver = Configured<std::string>{choice(node, k, {"TGS", "PGS"}), origin(node)};
       else unknown(key, "simulation");
     }
@@ -128,11 +132,11 @@ class Loader {
       if (k == "payload_kg") g.payload_kg = positive(node, k);
       else if (k == "friction") g.friction = positive(node, k);
       else if (k == "lever_arm_m") g.lever_arm_m = positive(node, k);
-      else if (k == "torque_margin") g.torque_margin = positive(node, k);
       else if (k == "gravity") g.gravity = *positive(node, k);
       else if (k == "finger_speed_m_s") g.finger_speed_m_s = positive(node, k);
       else if (k == "stroke_m") g.stroke_m = positive(node, k);
       else if (k == "target_delta_deg") g.target_delta_deg = *positive(node, k);
+      else if (k == "torque_margin") g.torque_margin = positive(node, k);
       else if (k == "driven_joint") g.driven_joint = Configured<std::string>{string(node, k), origin(node)};
       else unknown(key, "gripper");
     }

@@ -22,7 +22,10 @@ double factor(Unit unit) {
     case Unit::UsdOffsetMeter:
       return -1.0;
     case Unit::UsdOffsetDegree:
+    case Unit::UsdGearingDegreePerDistance:
       return -1.0 / kDegreesPerRadian;
+    case Unit::UsdGearingDistancePerDegree:
+      return -kDegreesPerRadian;
     default:
       return 1.0;
   }
@@ -42,6 +45,8 @@ Unit model_unit(Unit unit) {
     case Unit::UsdGearing: return Unit::None;
     case Unit::UsdOffsetDegree: return Unit::Radian;
     case Unit::UsdOffsetMeter: return Unit::Meter;
+    case Unit::UsdGearingDegreePerDistance: return Unit::RadianPerMeter;
+    case Unit::UsdGearingDistancePerDegree: return Unit::MeterPerRadian;
     default: return unit;
   }
 }
@@ -70,6 +75,10 @@ std::string_view unit_symbol(Unit unit) {
     case Unit::UsdGearing: return "";
     case Unit::UsdOffsetDegree: return "deg";
     case Unit::UsdOffsetMeter: return "m";
+    case Unit::UsdGearingDegreePerDistance: return "deg/m";
+    case Unit::UsdGearingDistancePerDegree: return "m/deg";
+    case Unit::RadianPerMeter: return "rad/m";
+    case Unit::MeterPerRadian: return "m/rad";
   }
   return "";
 }

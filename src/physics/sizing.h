@@ -1,6 +1,6 @@
 #pragma once
 // The guide's sizing steps that are not about the drive row itself (PHYSICS.md §2–3):
-// a stiffness from a force budget, the rotor behind an armature, rounding a budget up.
+// a stiffness from a force budget, the rotor behind an armature, the close time.
 namespace assetlint::physics {
 
 // k = τ_max / Δ: the stiffness whose spring alone still delivers the max force
@@ -13,8 +13,5 @@ double rotor_inertia_for_armature(double armature, double gear_ratio);
 
 // Time for one finger to travel half the stroke at the spec's finger speed (s).
 double close_time(double stroke, double finger_speed);
-
-// `value` rounded up to a whole multiple of `step` (3.33 at 1 → 4); `step` ≤ 0 leaves it.
-double round_up_to_multiple(double value, double step);
 
 }  // namespace assetlint::physics
