@@ -7,11 +7,13 @@ namespace assetlint::rules {
 const Rule& structure_undefined_link();
 const Rule& structure_mimic_reference();
 const Rule& limits_inverted();
+const Rule& limits_ambiguous();
 const Rule& units_angle_degrees();
 const Rule& units_velocity_implausible();
 const Rule& mimic_max_velocity();
 const Rule& mimic_limit_conflict();
 const Rule& inertia_invalid();
+const Rule& mass_ratio();
 const Rule& drive_max_force();
 const Rule& drive_natural_frequency();
 const Rule& drive_implicit_attenuation();

@@ -70,11 +70,7 @@ std::string DrivenJoint::inertias_text() const {
   return lighter + "; " + articulation;
 }
 
-std::string short_name(const Joint& joint) {
-  const std::string& name = joint.name.text;
-  const auto slash = name.find_last_of('/');
-  return "'" + (slash == std::string::npos ? name : name.substr(slash + 1)) + "'";
-}
+std::string short_name(const Joint& joint) { return "'" + short_path(joint.name.text) + "'"; }
 
 std::string name_list(const std::vector<std::string>& names, std::size_t limit) {
   std::string list;

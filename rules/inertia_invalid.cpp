@@ -48,13 +48,6 @@ std::unordered_map<const Link*, Placement> placements(const Asset& asset, const 
   return out;
 }
 
-// A USD prim path's last element keeps the primary message short; the span says where.
-std::string short_link_name(const Asset& asset, const Link& link) {
-  const std::string& name = link.name.text;
-  const auto slash = name.find_last_of('/');
-  return asset.format == SourceFormat::Usda && slash != std::string::npos ? name.substr(slash + 1) : name;
-}
-
 class InertiaInvalid final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
@@ -138,7 +131,7 @@ class InertiaInvalid final : public Rule {
         found.size() > 1 ? fmt::format(" (and {} more link{})", found.size() - 1, found.size() == 2 ? "" : "s") : "";
     Diagnostic& d = out.report(
         in.inertia_span, Severity::Warning,
-        fmt::format("link '{}': radius of gyration {} m is {} than the link could be{}", short_link_name(asset, *worst.link),
+        fmt::format("link '{}': radius of gyration {} m is {} than the link could be{}", short_path(worst.link->name.text),
                     format_number(worst.g.largest, 3), large ? "larger" : "smaller", more));
     d.note(fmt::format("√(I/m) = √({} kg·m² / {} kg) = {} m, {} {}.",
                        format_number(worst.g.largest * worst.g.largest * in.mass.value, 4),

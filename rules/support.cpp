@@ -29,6 +29,11 @@ Edit replace_value(const Quantity& q, double model_value, int significant) {
   return Edit{q.span.file, q.span.offset, q.span.length, format_number(q.authored_for(model_value), significant)};
 }
 
+std::string short_path(const std::string& name) {
+  const auto slash = name.find_last_of('/');
+  return slash == std::string::npos ? name : name.substr(slash + 1);
+}
+
 std::string joint_label(const Joint& joint) {
   return fmt::format("{} joint '{}'", joint_type_name(joint.type), joint.name.text);
 }

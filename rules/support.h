@@ -21,6 +21,10 @@ std::string describe_written(const Quantity& q, double model_value, int signific
 // An edit that rewrites a quantity's literal with a new model value, in the file's unit.
 Edit replace_value(const Quantity& q, double model_value, int significant = 6);
 
+// A name's last '/'-separated element ("/gripper/finger" → "finger"): keeps primary messages
+// short when names are USD prim paths; the diagnostic's span says where.
+std::string short_path(const std::string& name);
+
 // "revolute joint 'J0'"
 std::string joint_label(const Joint& joint);
 

@@ -107,6 +107,7 @@ struct Joint {
   OptQuantity lower;       // rad or m
   OptQuantity upper;
   Span limit_span;         // the <limit> element (URDF) or the joint prim (USD)
+  bool bounds_unreadable = false;  // URDF: lower or upper written but not a number (parse-error says so)
   OptQuantity effort;      // URDF <limit effort>: N·m or N
   OptQuantity velocity;    // max joint velocity: rad/s or m/s
   OptQuantity joint_damping;   // URDF <dynamics damping>

@@ -261,6 +261,7 @@ class UrdfReader {
       const Unit position = angular ? Unit::Radian : Unit::Meter;
       joint.lower = quantity(limit, "lower", position);
       joint.upper = quantity(limit, "upper", position);
+      joint.bounds_unreadable = (!joint.lower && limit->Attribute("lower")) || (!joint.upper && limit->Attribute("upper"));
       joint.effort = quantity(limit, "effort", angular ? Unit::NewtonMeter : Unit::Newton);
       joint.velocity = quantity(limit, "velocity", angular ? Unit::RadianPerSecond : Unit::MeterPerSecond);
     } else {
