@@ -18,6 +18,8 @@ class DriveImplicitAttenuation final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    // MuJoCo integrates position actuators' springs explicitly: nothing attenuates them.
+    if (asset.format == SourceFormat::Mjcf) return;
     const double threshold = rule_option(info_, settings, "max_dt_nf_squared");
     for (const Joint& joint : asset.joints) {
       auto driven = spring_drive(asset, joint, settings);

@@ -18,6 +18,7 @@ class JointMaxVelocity final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
     const double tolerance = rule_option(info_, settings, "tolerance_factor");
     const Joint* spec = physics::spec_joint(asset, settings);
     for (const Joint& joint : asset.joints) {

@@ -32,4 +32,9 @@ const RuleInfo kUnusedSuppression{
     "An inline suppression comment that suppresses nothing, names an unknown rule, or is malformed",
     Severity::Warning, true, RuleOrigin::Reader, {}};
 
+const RuleInfo kMjcfUnsupported{
+    "mjcf-unsupported",
+    "An MJCF construct asset-lint does not model (nonlinear joint coupling, tendon or site transmission, dampratio)",
+    Severity::Info, false, RuleOrigin::Reader, {}};
+
 }  // namespace assetlint::rules

@@ -11,5 +11,6 @@ extern const RuleInfo kLayerUnresolved;
 extern const RuleInfo kStaleSchemaAttribute;
 extern const RuleInfo kMimicAxisInstance;
 extern const RuleInfo kUnusedSuppression;
+extern const RuleInfo kMjcfUnsupported;
 
 }  // namespace assetlint::rules

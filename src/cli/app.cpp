@@ -4,11 +4,14 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <thread>
 
 #include "cli/rule_docs.h"
+#include "commands/compare.h"
+#include "commands/compare_fix.h"
 #include "config/resolver.h"
 #include "engine/linter.h"
 #include "fix/command.h"
@@ -77,6 +80,62 @@ bool validate_patterns(const std::vector<std::string>& patterns, const char* fla
   return true;
 }
 
+int run_compare(const std::vector<std::string>& paths, const std::vector<std::string>& map_pairs, double rtol,
+                const std::string& fix_side, bool fix, config::SettingsResolver& resolver, std::ostream& out,
+                std::ostream& err, const std::function<void(const std::vector<FileReport>&)>& write_report) {
+  if (paths.size() < 2 || paths.size() > 3) {
+    err << "asset-lint: error: usage: asset-lint compare A B [C]\n";
+    return kExitError;
+  }
+  commands::CompareOptions options;
+  options.rtol = rtol;
+  for (const auto& pair : map_pairs) {
+    const auto eq = pair.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == pair.size()) {
+      err << fmt::format("asset-lint: error: --map '{}': expected NAME=OTHER_NAME\n", pair);
+      return kExitError;
+    }
+    options.map.emplace_back(pair.substr(0, eq), pair.substr(eq + 1));
+  }
+  if (!fix_side.empty()) {
+    for (std::size_t i = 0; i < paths.size(); ++i)
+      if (paths[i] == fix_side || std::filesystem::path(paths[i]).filename() == fix_side) options.fix_side = static_cast<int>(i);
+    if (options.fix_side < 0) {
+      err << fmt::format("asset-lint: error: --fix-side '{}' is none of the compared files\n", fix_side);
+      return kExitError;
+    }
+  }
+  if (fix && options.fix_side < 0) {
+    err << "asset-lint: error: compare --fix needs --fix-side FILE (which file is right is yours to say)\n";
+    return kExitError;
+  }
+  if (auto error = resolver.prepare(paths)) {
+    err << "asset-lint: error: " << error->to_string() << "\n";
+    return kExitError;
+  }
+  std::string error;
+  FileReport report = commands::compare_files(paths, resolver.as_function(), options, error);
+  if (!error.empty()) {
+    err << "asset-lint: error: " << error << "\n";
+    return kExitError;
+  }
+  if (fix) {
+    int changed = 0;
+    if (auto failure = commands::apply_compare_fixes(report, resolver.as_function(), changed)) {
+      err << "asset-lint: error: " << *failure << "\n";
+      return kExitError;
+    }
+    report = commands::compare_files(paths, resolver.as_function(), options, error);
+    if (!error.empty()) {
+      err << "asset-lint: error: " << error << "\n";
+      return kExitError;
+    }
+    out << fmt::format("compare: {} file{} fixed\n", changed, changed == 1 ? "" : "s");
+  }
+  write_report({report});
+  return report.diagnostics.empty() ? kExitClean : kExitFindings;
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
@@ -89,6 +148,8 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
     return show_rule(args[1], out, err);
   }
   if (!args.empty() && args.front() == "check") args.erase(args.begin());
+  const bool compare = !args.empty() && args.front() == "compare";
+  if (compare) args.erase(args.begin());
 
   CLI::App app{"asset-lint: checks robot assets (URDF, USDA) against PhysX joint-tuning guidance", "asset-lint"};
   std::vector<std::string> paths;
@@ -129,10 +190,18 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
   app.add_flag("--fix", fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", diff, "Print a unified diff of what --fix would change; write nothing");
+  std::vector<std::string> map_pairs;
+  std::string fix_side;
+  double rtol = 1e-6;
+  app.add_option("--map", map_pairs, "compare: pair a name of the first file with one of the other (a=b)")
+      ->allow_extra_args(false);
+  app.add_option("--rtol", rtol, "compare: relative tolerance (default 1e-6)")->check(CLI::PositiveNumber);
+  app.add_option("--fix-side", fix_side, "compare: the file whose values the fixes rewrite (with --fix)");
   app.add_flag("--list-rules", show_rules, "List every rule and exit");
   app.add_flag("--version", show_version, "Print the version and exit");
   app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of "
+      "files in any format\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
       "Exit status: 0 nothing reported, 1 findings remain, 2 usage, configuration or I/O error.\n"
       "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
 
@@ -212,6 +281,8 @@ int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostrea
     }
     return exit_zero && code == kExitFindings ? kExitClean : code;
   };
+  if (compare) return finish(run_compare(paths, map_pairs, rtol, fix_side, fix, resolver, out, err, write_report));
+
   fix::FixCommandOptions fix_options;
   fix_options.diff = diff;
   fix_options.unsafe = unsafe_fixes;

@@ -12,6 +12,7 @@
 #include "config/drive_overrides.h"
 #include "engine/rule.h"
 #include "engine/suppressions.h"
+#include "formats/mjcf/mjcf_reader.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "rules/registry.h"
@@ -44,8 +45,11 @@ std::string tree_of(const std::string& path, const std::vector<std::string>& tre
 
 ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem& files,
                 const Settings& settings) {
-  switch (file_kind(path)) {
+  switch (file_kind(path, file->view())) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
+    case FileKind::Mjcf:
+      return mjcf::read_mjcf(std::move(file), files,
+                             mjcf::ReadOptions{tree_of(path, settings.trees), settings.allow_outside_root});
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files,
                              usda::ComposeOptions{tree_of(path, settings.trees), settings.allow_outside_root});
@@ -55,6 +59,17 @@ ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file,
   unsupported.asset.sources.push_back(std::move(file));
   unsupported.usable = false;
   return unsupported;
+}
+
+// Found in a directory: every .urdf/.usda/.mjcf, and .xml files whose root is <mujoco>
+// (other XML, such as launch files or MJCF include fragments' assets, is not a model).
+bool discoverable(const std::string& path) {
+  const FileKind kind = file_kind(path);
+  if (kind == FileKind::Unsupported) return false;
+  if (extension_of(path) != ".xml") return true;
+  std::string error;
+  auto text = disk().read(path, error);
+  return text && mjcf::looks_like_mjcf(*text);
 }
 
 void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
@@ -69,14 +84,30 @@ FileKind file_kind(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == ".urdf") return FileKind::Urdf;
   if (ext == ".usda") return FileKind::Usda;
+  if (ext == ".mjcf" || ext == ".xml") return FileKind::Mjcf;
+  return FileKind::Unsupported;
+}
+
+FileKind file_kind(const std::string& path, std::string_view text) {
+  const FileKind kind = file_kind(path);
+  if (kind != FileKind::Mjcf || extension_of(path) != ".xml" || mjcf::looks_like_mjcf(text)) return kind;
+  const std::string_view robot = "<robot";
+  for (std::size_t at = text.find('<'); at != std::string_view::npos; at = text.find('<', at + 1)) {
+    const char next = at + 1 < text.size() ? text[at + 1] : '\0';
+    if (next == '?' || next == '!') continue;
+    return text.substr(at, robot.size()) == robot ? FileKind::Urdf : FileKind::Unsupported;
+  }
   return FileKind::Unsupported;
 }
 
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
   FileReport report;
   report.path = path;
-  if (file_kind(path) == FileKind::Unsupported) {
-    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf and .usda files)", extension_of(path));
+  if (file_kind(path, text) == FileKind::Unsupported) {
+    report.error = extension_of(path) == ".xml"
+                       ? std::string("not a robot model: the root element of this .xml file is neither <mujoco> nor <robot>")
+                       : fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda, .mjcf and MJCF .xml files)",
+                                     extension_of(path));
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
@@ -101,6 +132,22 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   report.diagnostics = std::move(diagnostics);
   report.sources = std::move(result.asset.sources);
   return report;
+}
+
+std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
+                                     const FileSystem& files) {
+  std::optional<std::string> text = files.read(path, error);
+  if (!text) {
+    error = fmt::format("cannot read '{}': {}", path, error);
+    return std::nullopt;
+  }
+  if (file_kind(path, *text) == FileKind::Unsupported) {
+    error = fmt::format("'{}' is not a URDF, USDA or MJCF file", path);
+    return std::nullopt;
+  }
+  ReadResult result = read(path, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);
+  if (result.usable) config::apply_drive_settings(result.asset, settings);
+  return result;
 }
 
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files) {
@@ -166,8 +213,7 @@ PathExpansion expand_paths(const std::vector<std::string>& paths) {
         if (name.starts_with(".")) it.disable_recursion_pending();
         continue;
       }
-      if (it->is_regular_file(ec) && file_kind(it->path().string()) != FileKind::Unsupported)
-        found.push_back(it->path().string());
+      if (it->is_regular_file(ec) && discoverable(it->path().string())) found.push_back(it->path().string());
     }
     std::sort(found.begin(), found.end());
     out.files.insert(out.files.end(), found.begin(), found.end());

@@ -10,6 +10,7 @@
 #include "engine/diagnostic.h"
 #include "engine/file_system.h"
 #include "engine/settings.h"
+#include "formats/read_result.h"
 #include "model/source.h"
 
 namespace assetlint {
@@ -23,8 +24,16 @@ struct FileReport {
   const SourceFile& source(FileId id) const { return *sources.at(id); }
 };
 
-enum class FileKind { Urdf, Usda, Unsupported };
+enum class FileKind { Urdf, Usda, Mjcf, Unsupported };
+// By extension; a `.xml` file is MJCF when its root element is <mujoco> and URDF when it is
+// <robot> (`text` is then read to decide; without it, .xml is MJCF).
 FileKind file_kind(const std::string& path);
+FileKind file_kind(const std::string& path, std::string_view text);
+
+// Reads a file into the model (with the configuration's [drives.*] applied) without
+// running the rules; nullopt with `error` set when it cannot be read or is not a model.
+std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
+                                     const FileSystem& files = disk());
 
 // Reads and lints one file (through `files`, the disk by default).
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files = disk());
@@ -44,7 +53,8 @@ std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const 
 void drop_repeated_findings(std::vector<FileReport>& reports);
 
 // Files to check for the given paths: files as given, directories searched
-// recursively for *.urdf and *.usda (hidden directories skipped), sorted.
+// recursively for *.urdf, *.usda, *.mjcf and *.xml whose root is <mujoco> (hidden
+// directories skipped), sorted.
 struct PathExpansion {
   std::vector<std::string> files;
   std::vector<std::string> errors;  // paths that do not exist

@@ -443,7 +443,7 @@ Edit delete_comment(FileId file, std::string_view text, std::size_t begin, std::
 CommentSyntax comment_syntax_for(std::string_view path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".urdf" || ext == ".xml" ? CommentSyntax::Xml : CommentSyntax::Usda;
+  return ext == ".urdf" || ext == ".xml" || ext == ".mjcf" ? CommentSyntax::Xml : CommentSyntax::Usda;
 }
 
 std::vector<SuppressionComment> find_suppressions(std::string_view text, CommentSyntax syntax) {

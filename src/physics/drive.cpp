@@ -82,7 +82,8 @@ SimulationRate effective_simulation(const Asset& asset, const Settings& settings
     if (stage) {
       value = stage->value;
       origin = stage->span.valid() ? fmt::format("{}:{}", asset.source(stage->span.file).path(), stage->span.line)
-                                   : std::string("stage default");
+                                   : std::string(asset.format == SourceFormat::Mjcf ? "MuJoCo's default timestep"
+                                                                                    : "stage default");
     } else if (configured) {
       value = configured->value;
       origin = configured->origin;
@@ -94,6 +95,11 @@ SimulationRate effective_simulation(const Asset& asset, const Settings& settings
        rate.iterations_origin);
   if (!asset.scene.solver.empty()) rate.solver = asset.scene.solver;
   else if (settings.simulation.solver) rate.solver = settings.simulation.solver->value;
+  if (rate.solver == "MuJoCo") {
+    // MuJoCo integrates once per timestep: h = timestep, no iteration count divides it.
+    rate.position_iterations = 1;
+    rate.iterations_origin = "MuJoCo: one step per timestep";
+  }
   return rate;
 }
 
