@@ -6,7 +6,8 @@
 #include <map>
 #include <sstream>
 
-#include "engine/linter.h"
+#include "pipeline/discovery.h"
+#include "pipeline/lint.h"
 #include "formats/mjcf/mjcf_reader.h"
 #include "test_support.h"
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "engine/diagnostic.h"
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "model/asset.h"
 
 namespace assetlint::commands {

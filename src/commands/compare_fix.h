@@ -3,7 +3,7 @@
 #include <optional>
 #include <string>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 namespace assetlint::commands {
 

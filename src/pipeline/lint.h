@@ -1,6 +1,6 @@
 #pragma once
-// Runs the readers and the rules over files: the one entry point the CLI, the fixer
-// and the tests share.
+// Runs the readers and the rules over files: the one entry point the commands, the
+// fixer and the tests share.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -24,12 +24,6 @@ struct FileReport {
   const SourceFile& source(FileId id) const { return *sources.at(id); }
 };
 
-enum class FileKind { Urdf, Usda, Mjcf, Unsupported };
-// By extension; a `.xml` file is MJCF when its root element is <mujoco> and URDF when it is
-// <robot> (`text` is then read to decide; without it, .xml is MJCF).
-FileKind file_kind(const std::string& path);
-FileKind file_kind(const std::string& path, std::string_view text);
-
 // Reads a file into the model (with the configuration's [drives.*] applied) without
 // running the rules; nullopt with `error` set when it cannot be read or is not a model.
 std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
@@ -51,14 +45,5 @@ std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const 
 // layer that sublayers it) yields the same finding once per file that composes it:
 // keeps the first, drops the repeats (same layer, position, rule and message).
 void drop_repeated_findings(std::vector<FileReport>& reports);
-
-// Files to check for the given paths: files as given, directories searched
-// recursively for *.urdf, *.usda, *.mjcf and *.xml whose root is <mujoco> (hidden
-// directories skipped), sorted.
-struct PathExpansion {
-  std::vector<std::string> files;
-  std::vector<std::string> errors;  // paths that do not exist
-};
-PathExpansion expand_paths(const std::vector<std::string>& paths);
 
 }  // namespace assetlint
