@@ -17,6 +17,8 @@ FileKind file_kind(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == ".urdf") return FileKind::Urdf;
   if (ext == ".usda") return FileKind::Usda;
+  if (ext == ".usd") return FileKind::Usd;
+  if (ext == ".usdc" || ext == ".usdz") return FileKind::BinaryUsd;
   if (ext == ".mjcf" || ext == ".xml") return FileKind::Mjcf;
   return FileKind::Unsupported;
 }
@@ -32,5 +34,7 @@ FileKind file_kind(const std::string& path, std::string_view text) {
   }
   return FileKind::Unsupported;
 }
+
+FileKind usd_kind(std::string_view head) { return head.starts_with("#usda") ? FileKind::Usda : FileKind::BinaryUsd; }
 
 }  // namespace assetlint

@@ -38,9 +38,9 @@ std::string tree_of(const std::string& path, const std::vector<std::string>& tre
   return best;
 }
 
-ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem& files,
-                const Settings& settings) {
-  switch (file_kind(path, file->view())) {
+ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const SourceFile> file,
+                const FileSystem& files, const Settings& settings) {
+  switch (kind) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
     case FileKind::Mjcf:
       return mjcf::read_mjcf(std::move(file), files,
@@ -67,15 +67,23 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
   FileReport report;
   report.path = path;
-  if (file_kind(path, text) == FileKind::Unsupported) {
+  FileKind kind = file_kind(path, text);
+  if (kind == FileKind::Usd) kind = usd_kind(text);
+  if (kind == FileKind::BinaryUsd) {
+    report.error = fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting "
+                               "with '#usda 1.0')", path);
+    return report;
+  }
+  if (kind == FileKind::Unsupported) {
     report.error = extension_of(path) == ".xml"
                        ? std::string("not a robot model: the root element of this .xml file is neither <mujoco> nor <robot>")
-                       : fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda, .mjcf and MJCF .xml files)",
+                       : fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda, text .usd, .mjcf and "
+                                     "MJCF .xml files)",
                                      extension_of(path));
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
-  ReadResult result = read(path, std::move(file), files, settings);
+  ReadResult result = read(path, kind, std::move(file), files, settings);
   std::vector<Diagnostic> diagnostics;
   for (auto& d : result.diagnostics)
     if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
@@ -105,11 +113,13 @@ std::optional<ReadResult> read_asset(const std::string& path, const Settings& se
     error = fmt::format("cannot read '{}': {}", path, error);
     return std::nullopt;
   }
-  if (file_kind(path, *text) == FileKind::Unsupported) {
-    error = fmt::format("'{}' is not a URDF, USDA or MJCF file", path);
+  FileKind kind = file_kind(path, *text);
+  if (kind == FileKind::Usd) kind = usd_kind(*text);
+  if (kind == FileKind::Unsupported || kind == FileKind::BinaryUsd) {
+    error = fmt::format("'{}' is not a URDF, text USD or MJCF file", path);
     return std::nullopt;
   }
-  ReadResult result = read(path, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);
+  ReadResult result = read(path, kind, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);
   if (result.usable) config::apply_drive_settings(result.asset, settings);
   return result;
 }
