@@ -53,7 +53,7 @@ int run_compare(const std::vector<std::string>& paths, const CompareCommandOptio
     err << "asset-lint: error: " << error << "\n";
     return kExitError;
   }
-  write_report({report});
+  write_report({report}, RunProblems{});
   return report.diagnostics.empty() ? kExitClean : kExitFindings;
 }
 
