@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 
 #include "cli/options.h"
 #include "cli/report_writer.h"
@@ -12,6 +13,7 @@
 #include "commands/compare_command.h"
 #include "commands/exit_status.h"
 #include "commands/fix.h"
+#include "commands/stdin.h"
 #include "config/resolver.h"
 #include "pipeline/discovery.h"
 
@@ -35,9 +37,10 @@ bool use_color(const Options& options, bool out_is_terminal) {
          (options.color == "auto" && out_is_terminal && options.output_file.empty() && !std::getenv("NO_COLOR"));
 }
 
-// Checks or fixes the files the options name, writing the report to `report_out`.
-int run_files(const Options& options, bool compare, std::ostream& out, std::ostream& err, std::ostream& report_out,
-              bool out_is_terminal) {
+// Checks or fixes the files the options name (or standard input), writing the report to
+// `report_out`.
+int run_files(const Options& options, bool compare, std::istream& in, std::ostream& out, std::ostream& err,
+              std::ostream& report_out, bool out_is_terminal) {
   config::SettingsResolver resolver(overrides_from(options), options.config_path.empty()
                                                                  ? std::nullopt
                                                                  : std::optional(options.config_path));
@@ -50,6 +53,16 @@ int run_files(const Options& options, bool compare, std::ostream& out, std::ostr
     }
     return commands::run_compare(options.paths, {options.map_pairs, options.rtol, options.fix_side, options.fix},
                                  resolver.as_function(), out, err, write_report);
+  }
+  if (options.paths == std::vector<std::string>{"-"}) {
+    if (auto error = resolver.prepare({options.stdin_filename})) {
+      err << "asset-lint: error: " << error->to_string() << "\n";
+      return kExitError;
+    }
+    const commands::StdinOptions stdin_options{options.stdin_filename, options.fix, options.unsafe_fixes,
+                                               *parse_severity(options.fail_on)};
+    return commands::run_stdin(in, resolver.for_file(options.stdin_filename), stdin_options, out, err,
+                               write_report);
   }
   const PathExpansion expansion = expand_paths(options.paths);
   if (auto error = resolver.prepare(expansion.files)) {
@@ -68,8 +81,8 @@ int run_files(const Options& options, bool compare, std::ostream& out, std::ostr
                              write_report);
 }
 
-int run_check_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
-                      bool out_is_terminal, bool compare = false) {
+int run_check_command(const std::vector<std::string>& args, std::istream& in, std::ostream& out,
+                      std::ostream& err, bool out_is_terminal, bool compare = false) {
   ParsedOptions parsed = parse_options(args, out, err);
   if (!parsed.options) return parsed.exit_code;
   Options& options = *parsed.options;
@@ -92,7 +105,7 @@ int run_check_command(const std::vector<std::string>& args, std::ostream& out, s
     }
   }
   const int code =
-      run_files(options, compare, out, err, options.output_file.empty() ? out : report_file, out_is_terminal);
+      run_files(options, compare, in, out, err, options.output_file.empty() ? out : report_file, out_is_terminal);
   if (!options.output_file.empty() && !report_file) {
     err << fmt::format("asset-lint: error: cannot write '{}'\n", options.output_file);
     return kExitError;
@@ -103,13 +116,18 @@ int run_check_command(const std::vector<std::string>& args, std::ostream& out, s
 
 }  // namespace
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
+int run(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err,
+        bool out_is_terminal) {
   if (!args.empty() && args.front() == "rule") return run_rule_command(args, out, err);
   if (!args.empty() && args.front() == "compare")
-    return run_check_command({args.begin() + 1, args.end()}, out, err, out_is_terminal, true);
+    return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
   if (!args.empty() && args.front() == "check")
-    return run_check_command({args.begin() + 1, args.end()}, out, err, out_is_terminal);
-  return run_check_command(args, out, err, out_is_terminal);
+    return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal);
+  return run_check_command(args, in, out, err, out_is_terminal);
+}
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
+  return run(args, std::cin, out, err, out_is_terminal);
 }
 
 }  // namespace assetlint::cli

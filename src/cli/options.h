@@ -20,6 +20,7 @@ struct Options {
   bool fix = false, unsafe_fixes = false, diff = false;
   bool statistics = false, exit_zero = false, quiet = false;
   std::string output_file;
+  std::string stdin_filename;  // with the path "-": the file the text on stdin stands for
   std::string config_path;
   bool allow_outside_root = false;
   std::optional<double> timesteps_per_second;
