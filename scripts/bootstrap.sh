@@ -8,6 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   liburdfdom-dev libtinyxml2-dev libeigen3-dev libfmt-dev libcli11-dev
   catch2 libtomlplusplus-dev nlohmann-json3-dev
+  libmujoco-dev
 )
 
 # Optional tools some tests use when present (they warn and skip otherwise). Installing

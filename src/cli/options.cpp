@@ -41,9 +41,11 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--position-iterations", o.position_iterations,
                  "Solver position iterations, when the asset authors none")
       ->check(CLI::Range(1u, 255u));
-  app.add_flag("--allow-outside-root", o.allow_outside_root,
-               "Let USD composition read layers outside the checked tree (the directory named, or the working "
-               "directory)");
+  app.add_option("--root", o.root,
+                 "The checked tree whose files USD composition may read (default: the file's git work tree, else "
+                 "the directory of its asset-lint.toml, else the directory named or the working directory)")
+      ->check(CLI::ExistingDirectory);
+  app.add_flag("--allow-outside-root", o.allow_outside_root, "Let USD composition read layers outside the checked tree");
   app.add_flag("--fix", o.fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", o.unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", o.diff, "Print a unified diff of what --fix would change; write nothing");
@@ -127,6 +129,7 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   overrides.timesteps_per_second = o.timesteps_per_second;
   if (o.position_iterations) overrides.position_iterations = static_cast<double>(*o.position_iterations);
   overrides.allow_outside_root = o.allow_outside_root;
+  overrides.root = o.root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : o.paths)
     if (std::error_code ec; std::filesystem::is_directory(path, ec)) overrides.trees.push_back(path);

@@ -23,6 +23,7 @@ struct Options {
   std::string stdin_filename;  // with the path "-": the file the text on stdin stands for
   std::string config_path;
   bool allow_outside_root = false;
+  std::string root;  // --root
   std::optional<double> timesteps_per_second;
   std::optional<unsigned> position_iterations;
   unsigned jobs = 1;

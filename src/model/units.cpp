@@ -22,7 +22,10 @@ double factor(Unit unit) {
     case Unit::UsdOffsetMeter:
       return -1.0;
     case Unit::UsdOffsetDegree:
+    case Unit::UsdGearingDegreePerDistance:
       return -1.0 / kDegreesPerRadian;
+    case Unit::UsdGearingDistancePerDegree:
+      return -kDegreesPerRadian;
     default:
       return 1.0;
   }
@@ -49,6 +52,8 @@ Unit model_unit(Unit unit) {
     case Unit::UsdOffsetDegree: return Unit::Radian;
     case Unit::UsdOffsetMeter: return Unit::Meter;
     case Unit::SecondsPerStep: return Unit::PerSecond;
+    case Unit::UsdGearingDegreePerDistance: return Unit::RadianPerMeter;
+    case Unit::UsdGearingDistancePerDegree: return Unit::MeterPerRadian;
     default: return unit;
   }
 }
@@ -78,6 +83,10 @@ std::string_view unit_symbol(Unit unit) {
     case Unit::UsdOffsetDegree: return "deg";
     case Unit::UsdOffsetMeter: return "m";
     case Unit::SecondsPerStep: return "s";
+    case Unit::UsdGearingDegreePerDistance: return "deg/m";
+    case Unit::UsdGearingDistancePerDegree: return "m/deg";
+    case Unit::RadianPerMeter: return "rad/m";
+    case Unit::MeterPerRadian: return "m/rad";
   }
   return "";
 }

@@ -29,6 +29,13 @@ enum class Unit {
   UsdOffsetDegree,              // USD angular mimic offset (degrees, sign flipped like gearing)
   UsdOffsetMeter,               // USD linear mimic offset (sign flipped)
   SecondsPerStep,               // MJCF <option timestep>: the model value is the rate, 1 / timestep
+  // Mixed mimic gearing (omni.physx InternalMimicJoint.cpp): an angular mimic of a linear
+  // joint writes deg per distance, a linear mimic of an angular joint distance per deg;
+  // sign flipped like UsdGearing. The stage's metersPerUnit goes into Quantity::scale.
+  UsdGearingDegreePerDistance,
+  UsdGearingDistancePerDegree,
+  RadianPerMeter,
+  MeterPerRadian,
 };
 
 // Value in the model's unit = authored value × factor (+ sign for the USD mimic convention;

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "config/drive_overrides.h"
+#include "config/project_root.h"
 #include "engine/rule.h"
 #include "formats/file_kind.h"
 #include "formats/mjcf/mjcf_reader.h"
@@ -21,33 +22,16 @@
 namespace assetlint {
 namespace {
 
-// The deepest named tree that holds the file; empty (its own directory) when none does.
-std::string tree_of(const std::string& path, const std::vector<std::string>& trees) {
-  namespace fs = std::filesystem;
-  // Lexical paths, like the composer's own check: a tree named through a symlink keeps
-  // the files found through that symlink inside it.
-  std::error_code ec;
-  const fs::path file = fs::absolute(path, ec).lexically_normal();
-  std::string best;
-  for (const auto& tree : trees) {
-    const fs::path root = fs::absolute(tree, ec).lexically_normal();
-    const fs::path relative = file.lexically_relative(root);
-    const bool inside = !relative.empty() && *relative.begin() != "..";
-    if (inside && root.string().size() > best.size()) best = root.string();
-  }
-  return best;
-}
-
 ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const SourceFile> file,
                 const FileSystem& files, const Settings& settings) {
   switch (kind) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
     case FileKind::Mjcf:
       return mjcf::read_mjcf(std::move(file), files,
-                             mjcf::ReadOptions{tree_of(path, settings.trees), settings.allow_outside_root});
+                             mjcf::ReadOptions{config::checked_root(path, settings), settings.allow_outside_root});
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files,
-                             usda::ComposeOptions{tree_of(path, settings.trees), settings.allow_outside_root});
+                             usda::ComposeOptions{config::checked_root(path, settings), settings.allow_outside_root});
     default: break;
   }
   ReadResult unsupported;

@@ -248,21 +248,42 @@ class UrdfReader {
     joint.motor = Motor{*rotor, gear, fmt::format("<drake:rotor_inertia> and <drake:gear_ratio> at line {}", rotor->span.line)};
   }
 
-  // Runs urdfdom and places each of its complaints on the joint or link it names.
+  // Runs urdfdom and reports its complaints as one finding: the first is the cause, the rest
+  // (urdfdom's cascade, e.g. "Could not parse collision element" after an unknown geometry)
+  // become located notes.
   void check_with_urdfdom(std::string_view document) {
-    std::vector<std::pair<std::size_t, std::string>> seen;
     std::vector<std::string> messages = urdfdom_errors(document);
     // urdfdom's generic epilogue says nothing the specific messages before it do not.
-    if (messages.size() > 1)
-      std::erase(messages, std::string("joint xml is not initialized correctly"));
+    if (messages.size() > 1) std::erase(messages, std::string("joint xml is not initialized correctly"));
+    // An undefined link is structure-undefined-link's finding, which says that urdfdom rejects it.
+    std::erase_if(messages, [](const std::string& m) {
+      return m.starts_with("Failed to build tree: parent link [") || m.starts_with("Failed to build tree: child link [");
+    });
+    std::vector<std::pair<Span, std::string>> located;
     for (const auto& message : messages) {
       const Span span = locate_message(message);
       // urdfdom repeats a message once per element it rejects without naming it.
-      if (std::find(seen.begin(), seen.end(), std::pair{span.offset, message}) != seen.end()) continue;
-      seen.emplace_back(span.offset, message);
-      result_.diagnostics.push_back({std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span,
-                                     fmt::format("urdfdom rejects the file: {}", message), std::nullopt, {}});
+      const bool repeated = std::any_of(located.begin(), located.end(), [&](const auto& seen) {
+        return seen.first.offset == span.offset && seen.second == message;
+      });
+      if (!repeated) located.emplace_back(span, message);
     }
+    if (located.empty()) return;
+    const auto& [span, first] = located.front();
+    Diagnostic finding{std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span, {}, std::nullopt, {}};
+    const std::string primary = fmt::format("urdfdom rejects the file: {}", first);
+    if (primary.size() <= kMaxPrimaryMessage) {
+      finding.message = primary;
+    } else {
+      finding.message = "urdfdom rejects the file";
+      finding.note(fmt::format("urdfdom: {}", first));
+    }
+    if (located.size() > 1)
+      finding.note(fmt::format("urdfdom then reports {} more problem{}, most often consequences of the first:",
+                               located.size() - 1, located.size() == 2 ? "" : "s"));
+    for (std::size_t i = 1; i < located.size(); ++i) finding.note(located[i].first, located[i].second);
+    finding.note("ROS tools, check_urdf, Gazebo's URDF path and the simulator importers built on urdfdom refuse it.");
+    result_.diagnostics.push_back(std::move(finding));
   }
 
   Span locate_message(std::string_view message) const {
