@@ -74,6 +74,11 @@ class DriveNaturalFrequency final : public Rule {
       d.note("Under TGS the same drive would be judged against rate × position iterations: PGS builds the drive "
              "row with the whole frame.");
 
+    if (!driven.inertia_doubt.empty()) {
+      d.note(fmt::format("No stiffness is proposed: {}, so a value computed from it would be as wrong.",
+                         driven.inertia_doubt));
+      return;
+    }
     // The fix: the guide's stiffness k = max force / target delta when a force spec
     // exists, else the stiffness whose natural frequency is 1/h. Never a stiffer drive.
     const Quantity* force = max_force_of(joint);
