@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "rules/all_rules.h"
+#include "rules/compare_rules.h"
 #include "rules/reader_rules.h"
 
 namespace assetlint::rules {
@@ -14,6 +15,7 @@ const std::vector<const Rule*>& checks() {
       &limits_inverted(),
       &limits_ambiguous(),
       &units_angle_degrees(),
+      &units_angle_radians(),
       &units_velocity_implausible(),
       &mimic_max_velocity(),
       &mimic_limit_conflict(),
@@ -35,7 +37,7 @@ const std::vector<const RuleInfo*>& catalog() {
   static const std::vector<const RuleInfo*> list = [] {
     std::vector<const RuleInfo*> all{&kParseError, &kUrdfInvalid, &kLayerUnresolved, &kStaleSchemaAttribute,
                                      &kMimicAxisInstance, &kUnusedSuppression, &kDriveInstanceIgnored,
-                                     &kMimicLimitsRequired};
+                                     &kMimicLimitsRequired, &kMjcfUnsupported, &kCompareMismatch, &kCompareUnmatched};
     for (const Rule* rule : checks()) all.push_back(&rule->info());
     std::sort(all.begin(), all.end(), [](const RuleInfo* a, const RuleInfo* b) { return a->id < b->id; });
     return all;
