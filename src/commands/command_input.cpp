@@ -55,4 +55,22 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
   return result;
 }
 
+physics::SimulationRate command_rate(const Asset& asset, const Settings& settings) {
+  physics::SimulationRate rate = physics::effective_simulation(asset, settings);
+  const auto& sim = settings.simulation;
+  if (sim.timesteps_per_second && sim.timesteps_per_second->origin.starts_with("--")) {
+    rate.timesteps_per_second = sim.timesteps_per_second->value;
+    rate.rate_origin = sim.timesteps_per_second->origin;
+  }
+  if (sim.position_iterations && sim.position_iterations->origin.starts_with("--")) {
+    rate.position_iterations = sim.position_iterations->value;
+    rate.iterations_origin = sim.position_iterations->origin;
+  }
+  if (sim.solver && sim.solver->origin.starts_with("--")) {
+    rate.solver = sim.solver->value == "PGS" ? physics::Solver::PGS : physics::Solver::TGS;
+    rate.solver_origin = sim.solver->origin;
+  }
+  return rate;
+}
+
 }  // namespace assetlint::commands

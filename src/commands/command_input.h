@@ -8,6 +8,7 @@
 
 #include "pipeline/lint.h"
 #include "engine/settings.h"
+#include "physics/step.h"
 
 namespace assetlint::commands {
 
@@ -25,5 +26,10 @@ struct CommandAsset {
   std::optional<std::string> error;
 };
 CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config);
+
+// The rate, iterations and solver a command steps at: the asset's (stage, then
+// configuration, then PhysX defaults), except that values given on the command line
+// (origin "--rate", "--position-iterations", "--solver") win over the stage too.
+physics::SimulationRate command_rate(const Asset& asset, const Settings& settings);
 
 }  // namespace assetlint::commands

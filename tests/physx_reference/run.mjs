@@ -3,7 +3,7 @@
 // for each case its inputs, the joint position and velocity after each of 5 frames of free
 // motion from rest toward the target, the torque that holds the link at a hard stop short of
 // the target (from the stop's contact impulses) and how far a joint limit at the same place
-// lets the joint through.
+// lets the joint through; and free motion against a constant load torque (`loaded`).
 //
 //   node tests/physx_reference/run.mjs [path/to/node_modules/physx-js-webidl]
 //
@@ -12,7 +12,7 @@ import { readFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-import { cases } from './cases.mjs';
+import { cases, loadedCases } from './cases.mjs';
 import { loadPhysX, versionString } from './load_physx.mjs';
 import { World, simulate } from './single_link.mjs';
 
@@ -58,8 +58,31 @@ const results = cases.map((c) => {
   };
 });
 
+const LOADED_FRAMES = 8;
+const loaded = loadedCases.map((c) => {
+  const free = simulate(world, c, { frames: LOADED_FRAMES, withBlock: false });
+  return {
+    name: `${c.solver} ${c.name}`,
+    solver: c.solver,
+    rate: c.rate,
+    position_iterations: c.positionIterations,
+    velocity_iterations: c.velocityIterations,
+    stiffness: c.stiffness,
+    damping: c.damping,
+    max_force: c.maxForce,
+    drive_limits_are_forces: c.driveLimitsAreForces,
+    max_joint_velocity: c.maxJointVelocity ?? null,
+    load_torque: c.loadTorque,
+    armature: c.armature,
+    inertia: c.inertia,
+    target: c.targetDelta,
+    free_motion: { position: free.map((s) => s.position), velocity: free.map((s) => s.velocity) },
+  };
+});
+
 process.stdout.write(JSON.stringify({
   engine: `PhysX ${versionString(PhysX)}`,
   package: `physx-js-webidl ${packageVersion}`,
   cases: results,
+  loaded,
 }, null, 1) + '\n');
