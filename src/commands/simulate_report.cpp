@@ -65,7 +65,7 @@ std::string verdict(const SimulationContext& c, const SimulationSetup& s, const 
                         "after each {} solve removes the velocity the load adds (PhysX 5.6.1 does the same).\n",
                         format_number(std::abs(s.load), 4), c.force_unit, physics::solver_name(s.row.solver));
   const double r = s.row.type == DriveType::Acceleration ? 1.0 : s.row.response;
-  const std::string criterion = fmt::format("h²·k/I + 2·h·d/I = {} (stable below 4, with h·d/I = {} below 2)",
+  const std::string criterion = fmt::format("h²·k/I + 2·h·d/I = {} and h·d/I = {} (stable only below 4 and 2)",
                                             format_number(s.row.h * s.row.h * s.row.stiffness * r + 2 * s.row.h * s.row.damping * r, 3),
                                             format_number(s.row.h * s.row.damping * r, 3));
   if (run.explicit_metrics.diverged && !m.diverged)

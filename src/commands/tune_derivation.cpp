@@ -164,7 +164,9 @@ class Deriver {
       total.result = TuneResult{required->required, symbol(units_.force), {}, {}};
       if (const Quantity* current = current_max_force())
         total.notes.push_back(fmt::format("The asset has {} {} ({}).", format_number(current->value, 4),
-                                          unit_symbol(units_.force), origin_of(asset_, current->span)));
+                                          unit_symbol(units_.force),
+                                          current->span.valid() ? origin_of(asset_, current->span)
+                                                                : drive_settings_origin("max_force")));
     }
   }
 
