@@ -170,3 +170,32 @@ TEST_CASE("simulate: bad input is one line naming it, exit 2; work is bounded", 
   CHECK(r.err == "asset-lint simulate: error: gripper.urdf: joint 'finger_joint' has no drive stiffness: author one in "
                  "the asset or set [drives.finger_joint] stiffness (`asset-lint tune --apply` derives it)\n");
 }
+
+TEST_CASE("simulate and tune on the Robotiq stack of the corpus (configuration layer over payloads)", "[simulate][corpus]") {
+  const auto corpus = test::corpus_dir();
+  if (corpus.empty()) {
+    WARN("../shared/corpus is absent: the Robotiq stack is not checked");
+    return;
+  }
+  const auto stack = corpus / "usda" / "robotiq_2f85";
+  const std::string top = (stack / "configuration" / "Robotiq_2F_85_config_physics_parallel_grip.usda").string();
+  // The payload layers sit beside the configuration directory: --root takes them in.
+  auto r = run_cli({"simulate", top, "--root", stack.string(), "--output-format", "json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto doc = nlohmann::json::parse(r.out);
+  CHECK(doc["joint"] == "/Robotiq_2F_85/Robotiq_2F_85/Joints/finger_joint");
+  // Three bodies author no mass (their colliders would give it): the default falls back to the
+  // guide's lighter link and says why.
+  CHECK(doc["inertia_origin"].get<std::string>().starts_with("the guide's lighter link: the mechanism inertia is unknown"));
+  CHECK(doc["inertia"].get<double>() == Approx(1.16e-4).epsilon(0.01));
+  CHECK(doc["stiffness"].get<double>() == Approx(171.9).epsilon(1e-3));
+  CHECK(doc["h_s"].get<double>() == Approx(1.0 / 3840));
+  CHECK(doc["implicit"]["time_to_98_s"].is_number());
+  CHECK(doc["implicit"]["diverged"] == false);
+  auto asked = run_cli({"simulate", top, "--root", stack.string(), "--inertia", "mechanism"});
+  CHECK(asked.exit_code == 2);
+  CHECK(asked.err.find("the mechanism inertia of joint '/Robotiq_2F_85/Robotiq_2F_85/Joints/finger_joint' is unknown "
+                       "(unauthored mass: '/Robotiq_2F_85/Robotiq_2F_85/base_link'") != std::string::npos);
+  CHECK(run_cli({"tune", top, "--root", stack.string()}).exit_code == 0);
+}

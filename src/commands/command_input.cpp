@@ -1,14 +1,31 @@
 #include "commands/command_input.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
 
+#include "commands/exit_status.h"
 #include "config/resolver.h"
 #include "util/numbers.h"
 
 namespace assetlint::commands {
+
+std::optional<int> parse_command(CLI::App& app, const std::vector<std::string>& args, const std::string& name,
+                                 std::ostream& out, std::ostream& err) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return kExitClean;
+  } catch (const CLI::ParseError& e) {
+    err << "asset-lint " << name << ": error: " << e.what() << "\n";
+    return kExitError;
+  }
+  return std::nullopt;
+}
 
 std::optional<double> positive_flag(const std::string& flag, const std::string& text, std::string& error,
                                     bool allow_zero) {
@@ -20,7 +37,16 @@ std::optional<double> positive_flag(const std::string& flag, const std::string& 
   return value;
 }
 
-CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config) {
+void add_scope_options(CLI::App& app, CompositionScope& scope) {
+  app.add_option("--root", scope.root,
+                 "The tree whose files USD composition may read (default: the file's git work tree, else the "
+                 "directory of its asset-lint.toml)")
+      ->check(CLI::ExistingDirectory);
+  app.add_flag("--allow-outside-root", scope.allow_outside_root, "Let USD composition read layers outside that tree");
+}
+
+CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
+                                const CompositionScope& scope) {
   CommandAsset result;
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
@@ -29,6 +55,8 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
   }
   config::CommandLineOverrides overrides;
   overrides.trees.push_back(std::filesystem::current_path(ec).string());
+  overrides.root = scope.root;
+  overrides.allow_outside_root = scope.allow_outside_root;
   config::SettingsResolver resolver(overrides, config);
   if (auto problem = resolver.prepare({path})) {
     result.error = problem->to_string();

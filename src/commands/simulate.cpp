@@ -70,16 +70,9 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
       ->check(CLI::IsMember({"mechanism", "articulation", "lighter-link"}));
   app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the asset)");
   app.add_option("--output-format", format, "text or json")->check(CLI::IsMember({"text", "json"}));
-  std::vector<std::string> reversed(args.rbegin(), args.rend());
-  try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return kExitClean;
-  } catch (const CLI::ParseError& e) {
-    err << "asset-lint simulate: error: " << e.what() << "\n";
-    return kExitError;
-  }
+  CompositionScope scope;
+  add_scope_options(app, scope);
+  if (auto status = parse_command(app, args, "simulate", out, err)) return *status;
   const auto fail = [&](const std::string& message) {
     err << "asset-lint simulate: error: " << message << "\n";
     return kExitError;
@@ -101,7 +94,7 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   if (from_text && !(from_value = finite_flag("--from", *from_text, error))) return fail(error);
   if (to_text && !(to_value = finite_flag("--to", *to_text, error))) return fail(error);
 
-  CommandAsset input = load_command_asset(path, config);
+  CommandAsset input = load_command_asset(path, config, scope);
   if (input.error) return fail(*input.error);
   Settings settings = with_spec_flags(input.settings, flags);
   if (!solver.empty()) settings.simulation.solver = Configured<std::string>{solver, "--solver"};
@@ -141,21 +134,28 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   const physics::ArticulatedInertia articulated = articulation.inertia(*joint);
   const physics::EffectiveInertia lighter = physics::effective_inertia(articulation, asset, *joint);
   const std::size_t mimics = physics::coupled_joints(asset, *joint).size() - 1;
-  if (inertia_choice.empty()) inertia_choice = mimics > 0 ? "mechanism" : "articulation";
+  const bool chosen = !inertia_choice.empty();
+  if (!chosen) inertia_choice = mimics > 0 ? "mechanism" : "articulation";
   const auto unknown = [&](const physics::ArticulatedInertia& i) {
     std::string links;
     for (const auto& name : i.unknown_links) links += (links.empty() ? "'" : ", '") + name + "'";
     return links.empty() ? i.reason : "unauthored mass: " + links;
   };
   double inertia = 0;
-  if (inertia_choice == "lighter-link") {
+  const physics::ArticulatedInertia mechanism = physics::mechanism_inertia(articulation, asset, *joint);
+  const physics::ArticulatedInertia& wanted = inertia_choice == "mechanism" ? mechanism : articulated;
+  if (!chosen && !wanted.known && lighter.known) {
+    // By default, an unknown articulation falls back to the guide's estimate, and says so.
+    inertia = lighter.value;
+    context.inertia_origin = fmt::format("the guide's lighter link: the {} inertia is unknown ({})", inertia_choice,
+                                         unknown(wanted));
+  } else if (inertia_choice == "lighter-link") {
     if (!lighter.known)
       return fail(fmt::format("{}: --inertia lighter-link: no link of joint '{}' or its mimics authors mass and inertia",
                               path, joint->name.text));
     inertia = lighter.value;
     context.inertia_origin = "the guide's lighter link (--inertia lighter-link)";
   } else if (inertia_choice == "mechanism") {
-    const physics::ArticulatedInertia mechanism = physics::mechanism_inertia(articulation, asset, *joint);
     if (!mechanism.known)
       return fail(fmt::format("{}: the mechanism inertia of joint '{}' is unknown ({}): pass --inertia lighter-link",
                               path, joint->name.text, unknown(mechanism)));

@@ -28,6 +28,24 @@ const packageVersion = JSON.parse(readFileSync(join(packageDir, 'package.json'),
 const PhysX = await loadPhysX(packageDir);
 const world = new World(PhysX);
 
+// A case's inputs as the test reads them.
+const inputs = (c) => ({
+  name: `${c.solver} ${c.name}`,
+  solver: c.solver,
+  rate: c.rate,
+  position_iterations: c.positionIterations,
+  velocity_iterations: c.velocityIterations,
+  stiffness: c.stiffness,
+  damping: c.damping,
+  max_force: c.maxForce,
+  drive_limits_are_forces: c.driveLimitsAreForces,
+  max_joint_velocity: c.maxJointVelocity ?? null,
+  load_torque: c.loadTorque ?? 0,
+  armature: c.armature,
+  inertia: c.inertia,
+  target: c.targetDelta,
+});
+
 const results = cases.map((c) => {
   const physxCase = { ...c, maxForce: c.maxForce ?? PX_MAX_F32 };
   const free = simulate(world, physxCase, { frames: FREE_FRAMES, withBlock: false });
@@ -35,18 +53,7 @@ const results = cases.map((c) => {
   const limit = simulate(world, physxCase, { frames: LIMIT_FRAMES, withLimit: true });
   const last = hold[hold.length - 1], previous = hold[hold.length - 2];
   return {
-    name: `${c.solver} ${c.name}`,
-    solver: c.solver,
-    rate: c.rate,
-    position_iterations: c.positionIterations,
-    velocity_iterations: c.velocityIterations,
-    stiffness: c.stiffness,
-    damping: c.damping,
-    max_force: c.maxForce,
-    drive_limits_are_forces: c.driveLimitsAreForces,
-    armature: c.armature,
-    inertia: c.inertia,
-    target: c.targetDelta,
+    ...inputs(c),
     free_motion: { position: free.map((s) => s.position), velocity: free.map((s) => s.velocity) },
     hold: {
       torque: last.contactTorque,
@@ -62,20 +69,7 @@ const LOADED_FRAMES = 8;
 const loaded = loadedCases.map((c) => {
   const free = simulate(world, c, { frames: LOADED_FRAMES, withBlock: false });
   return {
-    name: `${c.solver} ${c.name}`,
-    solver: c.solver,
-    rate: c.rate,
-    position_iterations: c.positionIterations,
-    velocity_iterations: c.velocityIterations,
-    stiffness: c.stiffness,
-    damping: c.damping,
-    max_force: c.maxForce,
-    drive_limits_are_forces: c.driveLimitsAreForces,
-    max_joint_velocity: c.maxJointVelocity ?? null,
-    load_torque: c.loadTorque,
-    armature: c.armature,
-    inertia: c.inertia,
-    target: c.targetDelta,
+    ...inputs(c),
     free_motion: { position: free.map((s) => s.position), velocity: free.map((s) => s.velocity) },
   };
 });
