@@ -177,7 +177,8 @@ class DriveMaxForce final : public Rule {
   }
 
   RuleInfo info_{"drive-max-force",
-                 "A driven joint's maximum force is zero, unbounded, a placeholder, or far from the payload spec",
+                 "A driven joint's maximum force is zero, unbounded, a placeholder, far from the payload spec, or no "
+                 "larger than the joint's friction",
                  Severity::Warning,
                  true,
                  RuleOrigin::Check,

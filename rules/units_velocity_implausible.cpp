@@ -210,7 +210,8 @@ class UnitsVelocityImplausible final : public Rule {
   }
 
   RuleInfo info_{"units-velocity-implausible",
-                 "A joint velocity limit that only makes sense in another unit (or is a placeholder)",
+                 "A joint velocity limit that only makes sense in another unit, is a placeholder, or closes a gripper "
+                 "implausibly fast",
                  Severity::Warning,
                  true,
                  RuleOrigin::Check,

@@ -48,3 +48,21 @@ TEST_CASE("cli: a USD file composes layers only inside the checked tree", "[cli]
   const auto tree_text = run_cli({stack.string()}, elsewhere.path());
   CHECK(occurrences(tree_text.out, "It sets 10000 deg/s (174.5 rad/s)") >= 1);
 }
+
+TEST_CASE("cli: a layer checked alone and composed into a checked stage is judged once, in the stage", "[cli][usd]") {
+  // Alone, the physics layer runs at PhysX's default 60 Hz: its drive is an error. The
+  // configuration layer that sublayers it sets 250 Hz: the same drive is an info. One verdict
+  // on that line, the stage's.
+  const auto stack = assetlint::test::fixtures_dir() / "usda" / "robotiq_compliant";
+  const auto physics = (stack / "payloads" / "gripper_physics_compliant.usda").string();
+  auto alone = run_cli({"--output-format", "concise", "--select", "drive-natural-frequency", physics}, stack);
+  CHECK(occurrences(alone.out, "gripper_physics_compliant.usda:38:53:") == 1);
+  CHECK(occurrences(alone.out, "> TGS bound 3840 rad/s") == 1);
+
+  auto tree = run_cli({"--output-format", "concise", "--select", "drive-natural-frequency", stack.string()}, stack);
+  INFO(tree.out);
+  CHECK(occurrences(tree.out, "gripper_physics_compliant.usda:38:53:") == 1);
+  CHECK(occurrences(tree.out, "within the TGS bound 16000 rad/s") == 1);
+  CHECK(occurrences(tree.out, "> TGS bound 3840 rad/s") == 0);
+  CHECK(tree.exit_code == 0);
+}

@@ -22,6 +22,7 @@ int run_check(const PathExpansion& expansion, const SettingsFor& settings, const
               std::ostream& err, const WriteReport& write_report) {
   RunProblems problems = announce_expansion(expansion, err);
   std::vector<FileReport> reports = lint_files(expansion.files, settings, options.jobs);
+  judge_layers_in_stage_context(reports);
   drop_repeated_findings(reports);
   std::erase_if(reports, [&](const FileReport& report) {
     if (!report.error) return false;

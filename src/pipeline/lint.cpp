@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <tuple>
 #include <thread>
@@ -151,6 +152,43 @@ std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const 
   worker();
   for (auto& t : threads) t.join();
   return reports;
+}
+
+std::size_t judge_layers_in_stage_context(std::vector<FileReport>& reports) {
+  const auto canonical = [](const std::string& path) {
+    std::error_code ec;
+    const auto c = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : c.string();
+  };
+  std::vector<std::string> roots;
+  std::vector<std::set<std::string>> composed(reports.size());  // each report's layers, its own file aside
+  std::map<std::string, std::vector<std::size_t>> composers;     // layer → reports that compose it
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    roots.push_back(canonical(reports[i].path));
+    for (std::size_t id = 1; id < reports[i].sources.size(); ++id) {
+      std::string layer = canonical(reports[i].sources[id]->path());
+      if (layer == roots[i] || !composed[i].insert(layer).second) continue;
+      composers[layer].push_back(i);
+    }
+  }
+  const auto top_level = [&](std::size_t i) {
+    const auto it = composers.find(roots[i]);
+    return it == composers.end() || std::all_of(it->second.begin(), it->second.end(), [&](std::size_t j) { return j == i; });
+  };
+  std::size_t folded = 0;
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    const auto it = composers.find(roots[i]);
+    if (it == composers.end() || reports[i].error) continue;
+    const auto stage = std::find_if(it->second.begin(), it->second.end(), [&](std::size_t j) { return j != i && top_level(j); });
+    if (stage == it->second.end()) continue;
+    FileReport& report = reports[i];
+    std::erase_if(report.diagnostics, [&](const Diagnostic& d) {
+      const std::string layer = d.span.file < report.sources.size() ? canonical(report.source(d.span.file).path()) : roots[i];
+      return layer == roots[i] || composed[*stage].count(layer) > 0;
+    });
+    ++folded;
+  }
+  return folded;
 }
 
 void drop_repeated_findings(std::vector<FileReport>& reports) {

@@ -50,6 +50,14 @@ std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const 
 using SettingsFor = std::function<const Settings&(const std::string& path)>;
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const SettingsFor& settings, unsigned jobs);
 
+// A layer checked on its own and also composed into another checked USD stage would get a
+// verdict from each context (60 Hz alone, 250 Hz under the stage's configuration layer) on the
+// same lines. It is judged once, in the stage that uses it: the findings of its own report that
+// lie in layers such a stage composes are dropped. Only a stage that no other checked file
+// composes counts, so a cycle of layers keeps its findings. Returns how many reports were
+// folded into a stage.
+std::size_t judge_layers_in_stage_context(std::vector<FileReport>& reports);
+
 // A layer shared by several checked USD files (a physics layer and the configuration
 // layer that sublayers it) yields the same finding once per file that composes it:
 // keeps the first, drops the repeats (same layer, position, rule and message).
