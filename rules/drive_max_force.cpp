@@ -37,6 +37,7 @@ class DriveMaxForce final : public Rule {
       const OptQuantity& force = joint.drive && joint.drive->max_force ? joint.drive->max_force : joint.effort;
       if (!force) continue;
       judge(c, *force);
+      if (!usd) effort_within_friction(c, *force);
     }
   }
 
@@ -89,6 +90,25 @@ class DriveMaxForce final : public Rule {
                          format_number(q.value), sharing.size(), sharing.size() == 1 ? "" : "s"));
     d.note("Without a [gripper] spec in asset-lint.toml this is an info. With one, the bound is judged against the "
            "force the payload needs (a placeholder far above it makes the simulated gripper hold what the real one drops).");
+  }
+
+  // URDF <dynamics friction> is a Coulomb torque (force) opposing motion: an effort no larger
+  // than it can never start the joint. Talos's grippers write 1.0 for effort, friction,
+  // damping and velocity alike, a value typed into every field.
+  static void effort_within_friction(const Context& c, const Quantity& effort) {
+    const OptQuantity& friction = c.joint.joint_friction;
+    if (!friction || !friction->span.valid() || !(friction->value > 0) || !(effort.value > 0)) return;
+    if (effort.value > friction->value * (1 + 1e-9)) return;
+    const bool equal = effort.value >= friction->value * (1 - 1e-9);
+    Diagnostic& d = c.out.report(friction->span, Severity::Warning,
+                                 fmt::format("friction {} of {} {} its effort limit: it can never move", describe(*friction),
+                                             joint_label(c.joint), equal ? "equals" : "exceeds"));
+    d.note(effort.span, fmt::format("The effort limit is {}; consumers that apply <dynamics friction> as Coulomb friction "
+                                    "(Gazebo, through SDFormat's joint friction) need more than that to start the joint.",
+                                    describe(effort)));
+    if (equal)
+      d.note("The same number in effort and friction is usually one value typed into every field: take both from the "
+             "actuator's data sheet.");
   }
 
   // URDF effort ≤ 0: what it means depends on who reads the file. 0 and Gazebo's −1 are

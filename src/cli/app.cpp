@@ -15,6 +15,7 @@
 #include "commands/exit_status.h"
 #include "commands/fix.h"
 #include "commands/stdin.h"
+#include "commands/tune.h"
 #include "config/project_root.h"
 #include "config/resolver.h"
 #include "pipeline/discovery.h"
@@ -133,6 +134,7 @@ int run_check_command(const std::vector<std::string>& args, std::istream& in, st
 int run(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err,
         bool out_is_terminal) {
   if (!args.empty() && args.front() == "rule") return run_rule_command(args, out, err);
+  if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "check")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal);
   return run_check_command(args, in, out, err, out_is_terminal);

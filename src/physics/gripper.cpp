@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "physics/drive.h"
+#include "physics/sizing.h"
 #include "util/numbers.h"
 
 namespace assetlint::physics {
@@ -78,7 +79,7 @@ std::optional<RequiredVelocity> required_velocity(const Settings& settings, cons
   const double range = driven.upper->value - driven.lower->value;
   if (range <= 0) return std::nullopt;
   RequiredVelocity v;
-  v.close_time = g.stroke_m->value / 2.0 / g.finger_speed_m_s->value;
+  v.close_time = close_time(g.stroke_m->value, g.finger_speed_m_s->value);
   v.velocity = range / v.close_time;
   const char* unit = is_angular(driven.type) ? "rad" : "m";
   v.derivation = fmt::format("{} m stroke / 2 per finger at {} m/s closes in {} s; {} {} range / {} s = {} {}/s",

@@ -42,21 +42,27 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
   });
 }
 
+// The reader for `path` (text USD is told from binary by its first bytes), or why none.
+std::optional<std::string> kind_of(const std::string& path, std::string_view text, FileKind& kind) {
+  kind = file_kind(path);
+  if (kind == FileKind::Usd) kind = usd_kind(text);
+  if (kind == FileKind::BinaryUsd)
+    return fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting with '#usda "
+                       "1.0')", path);
+  if (kind == FileKind::Unsupported)
+    return fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda and text .usd files)",
+                       extension_of(path));
+  return std::nullopt;
+}
+
 }  // namespace
 
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
   FileReport report;
   report.path = path;
-  FileKind kind = file_kind(path);
-  if (kind == FileKind::Usd) kind = usd_kind(text);
-  if (kind == FileKind::BinaryUsd) {
-    report.error = fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting "
-                               "with '#usda 1.0')", path);
-    return report;
-  }
-  if (kind == FileKind::Unsupported) {
-    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda and text .usd files)",
-                               extension_of(path));
+  FileKind kind;
+  if (auto why = kind_of(path, text, kind)) {
+    report.error = std::move(*why);
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
@@ -93,6 +99,24 @@ FileReport lint_file(const std::string& path, const Settings& settings, const Fi
     return report;
   }
   return lint_text(path, std::move(*text), settings, files);
+}
+
+LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files) {
+  LoadedAsset loaded;
+  std::string error;
+  std::optional<std::string> text = files.read(path, error);
+  if (!text) {
+    loaded.error = fmt::format("cannot read '{}': {}", path, error);
+    return loaded;
+  }
+  FileKind kind;
+  if (auto why = kind_of(path, *text, kind)) {
+    loaded.error = std::move(*why);
+    return loaded;
+  }
+  loaded.read = read(path, kind, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);
+  if (loaded.read.usable) config::apply_drive_settings(loaded.read.asset, settings);
+  return loaded;
 }
 
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs) {
