@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 using assetlint::test::read_file;
+using assetlint::test::replace_once;
 using assetlint::test::run_cli;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
@@ -12,12 +13,6 @@ using assetlint::test::write_file;
 namespace {
 
 std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
 
 // Runs --add-suppressions twice on `name`; returns the text after the first run and checks
 // that the second changes nothing and the check is then clean.
@@ -44,9 +39,9 @@ TEST_CASE("add-suppressions: URDF gets an XML comment before the element of each
   write_file(dir.path() / "gripper.urdf", original);
   const std::string after = add_twice(dir.path(), "gripper.urdf", "limits-inverted,mimic-max-velocity",
                                       "asset-lint: added 2 suppression comments to gripper.urdf\n");
-  std::string expected = replaced(original, "    <limit lower=\"0.82\"",
+  std::string expected = replace_once(original, "    <limit lower=\"0.82\"",
                                   "    <!-- asset-lint: ignore[limits-inverted] -->\n    <limit lower=\"0.82\"");
-  expected = replaced(expected, "    <limit lower=\"-0.82\"",
+  expected = replace_once(expected, "    <limit lower=\"-0.82\"",
                       "    <!-- asset-lint: ignore[mimic-max-velocity] -->\n    <limit lower=\"-0.82\"");
   CHECK(after == expected);
 }
@@ -57,10 +52,10 @@ TEST_CASE("add-suppressions: USDA gets a # comment before the statement, one per
   write_file(dir.path() / "joints.usda", original);
   const std::string after = add_twice(dir.path(), "joints.usda", "stale-schema-attribute",
                                       "asset-lint: added 2 suppression comments to joints.usda\n");
-  std::string expected = replaced(original, "        float physxJoint:maxJointVelocity",
+  std::string expected = replace_once(original, "        float physxJoint:maxJointVelocity",
                                   "        # asset-lint: ignore[stale-schema-attribute]\n"
                                   "        float physxJoint:maxJointVelocity");
-  expected = replaced(expected, "        float drive:angular:physics:damping = 5000",
+  expected = replace_once(expected, "        float drive:angular:physics:damping = 5000",
                       "        # asset-lint: ignore[stale-schema-attribute]\n"
                       "        float drive:angular:physics:damping = 5000");
   CHECK(after == expected);
@@ -78,8 +73,8 @@ TEST_CASE("add-suppressions: CRLF files keep CRLF; an element inside a line gets
   write_file(dir.path() / "crlf.urdf", crlf);
   const std::string after = add_twice(dir.path(), "crlf.urdf", "limits-inverted",
                                       "asset-lint: added 2 suppression comments to crlf.urdf\n");
-  std::string expected = replaced(crlf, "<limit lower=\"1\"", "<!-- asset-lint: ignore[limits-inverted] --> <limit lower=\"1\"");
-  expected = replaced(expected, "    <limit lower=\"2\"",
+  std::string expected = replace_once(crlf, "<limit lower=\"1\"", "<!-- asset-lint: ignore[limits-inverted] --> <limit lower=\"1\"");
+  expected = replace_once(expected, "    <limit lower=\"2\"",
                       "    <!-- asset-lint: ignore[limits-inverted] -->\r\n    <limit lower=\"2\"");
   CHECK(after == expected);
 }
@@ -96,7 +91,7 @@ TEST_CASE("add-suppressions: several rules on one element share one comment", "[
   write_file(dir.path() / "two.urdf", urdf);
   const std::string after = add_twice(dir.path(), "two.urdf", "limits-inverted,mimic-max-velocity",
                                       "asset-lint: added 1 suppression comment to two.urdf\n");
-  CHECK(after == replaced(urdf, "    <limit lower=\"1\"",
+  CHECK(after == replace_once(urdf, "    <limit lower=\"1\"",
                           "    <!-- asset-lint: ignore[limits-inverted, mimic-max-velocity] -->\n    <limit lower=\"1\""));
 }
 

@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 using assetlint::test::read_file;
+using assetlint::test::replace_once;
 using assetlint::test::run_cli;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
@@ -55,12 +56,6 @@ void copy_assets(const std::filesystem::path& dir) {
   write_file(dir / "joints.usda", read_file(report_dir() / "joints.usda"));
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
-
 }  // namespace
 
 TEST_CASE("baseline: --write-baseline records rule, path, element and attribute", "[baseline]") {
@@ -84,9 +79,9 @@ TEST_CASE("baseline: unrelated edits keep the keys; new findings are reported, s
   write_file(dir.path() / "asset-lint-baseline.json", kBaseline);
   // Lines added above every finding, finger_joint's limits repaired, a new inverted joint.
   std::string urdf = read_file(dir.path() / "gripper.urdf");
-  urdf = replaced(urdf, "<robot name=\"gripper\">\n", "<robot name=\"gripper\">\n  <!-- moved down -->\n  <link name=\"thumb\"/>\n");
-  urdf = replaced(urdf, "lower=\"0.82\" upper=\"0\"", "lower=\"0\" upper=\"0.82\"");
-  urdf = replaced(urdf, "</robot>",
+  urdf = replace_once(urdf, "<robot name=\"gripper\">\n", "<robot name=\"gripper\">\n  <!-- moved down -->\n  <link name=\"thumb\"/>\n");
+  urdf = replace_once(urdf, "lower=\"0.82\" upper=\"0\"", "lower=\"0\" upper=\"0.82\"");
+  urdf = replace_once(urdf, "</robot>",
                   "  <joint name=\"thumb_joint\" type=\"revolute\">\n    <parent link=\"base_link\"/>\n"
                   "    <child link=\"thumb\"/>\n    <limit lower=\"1\" upper=\"0\" effort=\"1\" velocity=\"1\"/>\n"
                   "  </joint>\n</robot>");

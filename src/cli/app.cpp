@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <string_view>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -28,9 +29,20 @@ using commands::kExitClean;
 using commands::kExitError;
 using commands::kExitFindings;
 
+// --color auto: NO_COLOR (set, not empty) turns colour off; CLICOLOR_FORCE or FORCE_COLOR
+// (set, not empty, not "0") turn it on even off a terminal; TERM=dumb turns it off;
+// otherwise colour only on a terminal, never into --output-file.
 bool use_color(const Options& options, bool out_is_terminal) {
-  return options.color == "always" ||
-         (options.color == "auto" && out_is_terminal && options.output_file.empty() && !std::getenv("NO_COLOR"));
+  if (options.color != "auto") return options.color == "always";
+  auto value = [](const char* name) -> std::string_view {
+    const char* v = std::getenv(name);
+    return v ? v : "";
+  };
+  if (!value("NO_COLOR").empty()) return false;
+  for (const char* force : {"CLICOLOR_FORCE", "FORCE_COLOR"})
+    if (!value(force).empty() && value(force) != "0") return true;
+  if (value("TERM") == "dumb") return false;
+  return out_is_terminal && options.output_file.empty();
 }
 
 int show_settings(const std::string& file, config::SettingsResolver& resolver, std::ostream& out, std::ostream& err) {

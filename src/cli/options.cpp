@@ -34,8 +34,8 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--no-respect-gitignore", o.no_respect_gitignore, "Walk into files and directories .gitignore ignores");
   app.add_flag("--force-exclude", o.force_exclude,
                "Apply the exclusions to paths named on the command line too (for pre-commit and editors)");
-  app.add_option("--output-format", o.format, "Output format: text, concise, json, sarif, github, gitlab or junit")
-      ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "gitlab", "junit"}));
+  app.add_option("--output-format", o.format, "Output format: text, full (text with the source lines), concise, json, sarif, github, gitlab or junit")
+      ->check(CLI::IsMember({"text", "full", "concise", "json", "sarif", "github", "gitlab", "junit"}));
   app.add_option("--stdin-filename", o.stdin_filename,
                  "With the path '-': lint standard input as this file (its configuration and layers); "
                  "with --fix, print the fixed text");
@@ -50,7 +50,9 @@ void add_options(CLI::App& app, Options& o) {
                  "Record every current finding in this baseline file (instead of reporting them) and exit 0");
   app.add_flag("--exit-zero", o.exit_zero, "Exit 0 even when findings remain (still 2 on errors)");
   app.add_flag("-q,--quiet", o.quiet, "Text output: only the findings, no summary line");
-  app.add_option("--color", o.color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_option("--color", o.color,
+                 "Colour the text output (auto: on a terminal; NO_COLOR or TERM=dumb turn it off, CLICOLOR_FORCE or "
+                 "FORCE_COLOR on)")->check(CLI::IsMember({"auto", "always", "never"}));
   app.add_option("-j,--jobs", o.jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
   app.add_option("--config", o.config_path,
                  "Use this asset-lint.toml for every file (default: the nearest one above each file)")
@@ -135,7 +137,7 @@ bool validate_options(const Options& o, std::ostream& err) {
     err << "asset-lint: error: --diff does not read standard input; use --fix to print the fixed text\n";
     return false;
   }
-  if (o.diff && o.format != "text" && o.format != "concise") {
+  if (o.diff && o.format != "text" && o.format != "full" && o.format != "concise") {
     err << "asset-lint: error: --diff prints a unified diff; it cannot be combined with --output-format " << o.format
         << "\n";
     return false;
@@ -158,7 +160,7 @@ bool validate_options(const Options& o, std::ostream& err) {
     err << "asset-lint: error: --list-rules prints text or --output-format json\n";
     return false;
   }
-  if (o.statistics && o.format != "text" && o.format != "concise" && o.format != "json") {
+  if (o.statistics && o.format != "text" && o.format != "full" && o.format != "concise" && o.format != "json") {
     err << "asset-lint: error: --statistics works with --output-format text, concise or json\n";
     return false;
   }
