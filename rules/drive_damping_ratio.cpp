@@ -45,9 +45,12 @@ class DriveDampingRatio final : public Rule {
                               format_number(physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value), 3));
         d.note(std::move(both));
       }
-      d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
-                         describe_gain(drive.damping, critical, damping_unit(joint))));
-      if (drive.damping && drive.damping->span.valid()) {
+      if (driven->inertia_doubt.empty())
+        d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
+                           describe_gain(drive.damping, critical, damping_unit(joint))));
+      if (!driven->inertia_doubt.empty()) {
+        d.note(fmt::format("No fix is offered: {}, so a damping computed from it would be as wrong.", driven->inertia_doubt));
+      } else if (drive.damping && drive.damping->span.valid()) {
         d.fix = Fix{fmt::format("set damping {} for a damping ratio of 1", describe_gain(drive.damping, critical, damping_unit(joint))),
                     Applicability::Unsafe, {replace_value(*drive.damping, critical, 4)}};
       }

@@ -21,6 +21,8 @@ class DriveImplicitAttenuation final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    // MuJoCo integrates position actuators' springs explicitly: nothing attenuates them.
+    if (asset.format == SourceFormat::Mjcf) return;
     const double threshold = rule_option(info_, settings, "min_factor");
     const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {

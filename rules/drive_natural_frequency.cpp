@@ -47,7 +47,6 @@ class DriveNaturalFrequency final : public Rule {
     const double nf = physics::natural_frequency(driven.stiffness, inertia);
     const double bound = rate.frequency_bound();
     const double h_nf = rate.h() * nf;
-    const bool tgs = rate.solver == physics::Solver::TGS;
     if (nf <= rate.timesteps_per_second) return;
     const Unit k_unit = stiffness_unit(joint), d_unit = damping_unit(joint);
 
@@ -71,10 +70,15 @@ class DriveNaturalFrequency final : public Rule {
                     format_number(h_nf, 3)));
     d.note(derivation(driven, nf));
     d.note(bound_text(rate, h_nf));
-    if (!tgs)
+    if (rate.solver == physics::Solver::PGS)
       d.note("Under TGS the same drive would be judged against rate × position iterations: PGS builds the drive "
              "row with the whole frame.");
 
+    if (!driven.inertia_doubt.empty()) {
+      d.note(fmt::format("No stiffness is proposed: {}, so a value computed from it would be as wrong.",
+                         driven.inertia_doubt));
+      return;
+    }
     // The fix: the guide's stiffness k = max force / target delta when a force spec
     // exists, else the stiffness whose natural frequency is 1/h. Never a stiffer drive.
     const Quantity* force = max_force_of(joint);
@@ -91,10 +95,13 @@ class DriveNaturalFrequency final : public Rule {
         // levers are armature and the step.
         const double armature = k_force / (bound * bound) - inertia;
         d.note(fmt::format("Even the guide's stiffness, max force {} / {}° target delta = {}, gives {} rad/s: add "
-                           "armature ≥ {} {} or shorten h (more position iterations or a higher rate) to ≤ {} s.",
+                           "armature ≥ {} {} or shorten h ({}) to ≤ {} s.",
                            describe(*force), format_number(settings.gripper.target_delta_deg.value),
                            describe_gain(drive.stiffness, k_force, k_unit), format_number(nf_force, 4),
-                           format_number(armature, 3), driven.inertia_unit(), format_number(1.0 / nf_force, 3)));
+                           format_number(armature, 3), driven.inertia_unit(),
+                           rate.solver == physics::Solver::MuJoCo ? "a smaller <option timestep>"
+                                                                  : "more position iterations or a higher rate",
+                           format_number(1.0 / nf_force, 3)));
         return;
       }
       proposed = k_force;
@@ -139,6 +146,10 @@ class DriveNaturalFrequency final : public Rule {
     if (rate.solver == physics::Solver::TGS)
       return fmt::format("The guide's bound is nf ≤ rate × position iterations = {} rad/s, i.e. h·nf ≤ 1 at {}; here "
                          "h·nf = {}.",
+                         format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));
+    if (rate.solver == physics::Solver::MuJoCo)
+      return fmt::format("MuJoCo integrates a position actuator's spring explicitly once per timestep; the guide's bound "
+                         "is nf ≤ 1/timestep = {} rad/s, i.e. h·nf ≤ 1 at {}; here h·nf = {}.",
                          format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));
     return fmt::format("The bound is nf ≤ rate = {} rad/s, i.e. h·nf ≤ 1 at {}; here h·nf = {}.",
                        format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));

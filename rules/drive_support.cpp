@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "physics/inertia.h"
 #include "rules/support.h"
 #include "util/numbers.h"
 
@@ -24,6 +25,8 @@ std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   d.inertia = physics::effective_inertia(articulation_, asset_, joint);
   d.articulated = articulation_.inertia(joint);
   d.inertia_used = drive.type == DriveType::Acceleration ? 1.0 : d.inertia.value;
+  if (drive.type != DriveType::Acceleration && d.inertia.known && d.inertia.link)
+    d.inertia_doubt = physics::inertia_doubt(asset_, *d.inertia.link);
   d.rate = rate_;
   return d;
 }

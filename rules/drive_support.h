@@ -19,6 +19,9 @@ struct DrivenJoint {
   double damping = 0;    // model units (unauthored: 0, USD's default)
   physics::EffectiveInertia inertia;         // the guide's lighter-link estimate (+ armature)
   physics::ArticulatedInertia articulated;   // 1/r, what PhysX's row sees (armature included)
+  // Why the lighter link's tensor cannot be trusted (a placeholder, a radius of gyration that
+  // does not fit): the verdict still stands, but no fix is computed from it. Empty when trusted.
+  std::string inertia_doubt;
   double inertia_used = 0;  // I of the guide's formulas: the lighter link, 1 for acceleration drives
   physics::SimulationRate rate;
 

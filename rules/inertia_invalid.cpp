@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <unordered_map>
 
 #include "model/topology.h"
@@ -47,9 +48,11 @@ std::unordered_map<const Link*, Placement> placements(const Asset& asset, const 
   return out;
 }
 
-bool all_entries_equal(const Eigen::Matrix3d& m) {
-  return m(0, 0) != 0 && m(0, 0) == m(1, 1) && m(0, 0) == m(2, 2) && m(0, 0) == m(0, 1) && m(0, 0) == m(0, 2) &&
-         m(0, 0) == m(1, 2);
+// A USD prim path's last element keeps the primary message short; the span says where.
+std::string short_link_name(const Asset& asset, const Link& link) {
+  const std::string& name = link.name.text;
+  const auto slash = name.find_last_of('/');
+  return asset.format == SourceFormat::Usda && slash != std::string::npos ? name.substr(slash + 1) : name;
 }
 
 class InertiaInvalid final : public Rule {
@@ -65,14 +68,15 @@ class InertiaInvalid final : public Rule {
       const auto found = where.find(&link);
       check_link(link, found == where.end() ? Placement{} : found->second, settings, out);
     }
-    report_mass_equals_inertia(asset, out);
+    const auto equal = report_mass_equals_inertia(asset, out);
+    report_gyration(asset, where, equal, out);
   }
 
  private:
   // Mass and every principal moment typed as the same number (Drake's Atlas Robotiq 3F:
   // 1e-5 kg and 1e-5 kg·m² on 21 four-bar links): a placeholder, one info per file. Its
   // radius of gyration √(I/m) = 1 m is far larger than any finger link.
-  static void report_mass_equals_inertia(const Asset& asset, Reporter& out) {
+  static std::vector<const Link*> report_mass_equals_inertia(const Asset& asset, Reporter& out) {
     std::vector<const Link*> found;
     for (const Link& link : asset.links) {
       if (!link.inertial || !link.inertial->mass_authored || !link.inertial->inertia_authored) continue;
@@ -81,7 +85,7 @@ class InertiaInvalid final : public Rule {
       if (m <= 0 || m >= 1.0) continue;
       if (in.inertia(0, 0) == m && in.inertia(1, 1) == m && in.inertia(2, 2) == m) found.push_back(&link);
     }
-    if (found.empty()) return;
+    if (found.empty()) return found;
     const Inertial& first = *found.front()->inertial;
     Diagnostic& d = out.report(first.inertia_span, Severity::Info,
                                found.size() == 1
@@ -99,6 +103,63 @@ class InertiaInvalid final : public Rule {
       d.note(fmt::format("They include {}{}.", names, found.size() > 5 ? fmt::format(" and {} more", found.size() - 5) : ""));
     }
     d.note("Take mass and inertia from CAD, or leave the links out of tuning until they are measured.");
+    return found;
+  }
+
+  // A tensor too large (or too small) for the link that carries it: 0.02 kg fingers with
+  // 0.01 kg·m² (Rethink's electric gripper), every Minitaur link. One warning per file at the
+  // worst link; the others are notes. Only a body's own link is judged: a welded frame's tensor
+  // is merged into a heavier body. Placeholders already reported above are not repeated.
+  static void report_gyration(const Asset& asset, const std::unordered_map<const Link*, Placement>& where,
+                              const std::vector<const Link*>& already, Reporter& out) {
+    struct Found {
+      const Link* link;
+      physics::Gyration g;
+      double excess;  // how far outside its bound, as a factor
+    };
+    std::vector<Found> found;
+    for (const Link& link : asset.links) {
+      const auto placed = where.find(&link);
+      if (placed == where.end() || placed->second.role != Role::BodyStart || !link.inertial) continue;
+      if (physics::pasted_tensor(link.inertial->inertia) ||
+          std::find(already.begin(), already.end(), &link) != already.end())
+        continue;
+      const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link));
+      if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
+      const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;
+      found.push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest});
+    }
+    if (found.empty()) return;
+    std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.excess > b.excess; });
+    const Found& worst = found.front();
+    const Inertial& in = *worst.link->inertial;
+    const bool large = worst.g.verdict == physics::Gyration::Verdict::TooLarge;
+    const std::string more =
+        found.size() > 1 ? fmt::format(" (and {} more link{})", found.size() - 1, found.size() == 2 ? "" : "s") : "";
+    Diagnostic& d = out.report(
+        in.inertia_span, Severity::Warning,
+        fmt::format("link '{}': radius of gyration {} m is {} than the link could be{}", short_link_name(asset, *worst.link),
+                    format_number(worst.g.largest, 3), large ? "larger" : "smaller", more));
+    d.note(fmt::format("√(I/m) = √({} kg·m² / {} kg) = {} m, {} {}.",
+                       format_number(worst.g.largest * worst.g.largest * in.mass.value, 4),
+                       format_number(in.mass.value, 4), format_number(worst.g.largest, 3),
+                       large ? "above" : "under", worst.g.bound_text()));
+    if (large)
+      d.note("All of a body's mass lies within its extent R of the COM, so √(I/m) ≤ R: this tensor (or this mass) "
+             "is not the part's, often a template's 0.01 or 0.001 kg·m² left on a light link.");
+    else
+      d.note("A link this heavy with so small a tensor is a point mass typed in: its rotation reacts to torques as if "
+             "it weighed nothing.");
+    d.note("Natural frequencies √(k/I) and damping ratios computed on it are wrong; the drive rules offer no fix from it.");
+    for (std::size_t i = 1; i < found.size() && i <= 5; ++i)
+      d.note(found[i].link->inertial->inertia_span,
+             fmt::format("Also '{}': √(I/m) = {} m, bound {} m.", found[i].link->name.text,
+                         format_number(found[i].g.largest, 3),
+                         format_number(found[i].g.verdict == physics::Gyration::Verdict::TooLarge ? found[i].g.bound
+                                                                                                   : physics::kGyrationMinRadius,
+                                       3)));
+    if (found.size() > 6) d.note(fmt::format("And {} more links like these.", found.size() - 6));
+    d.note("Take mass and inertia from CAD (or compute them from the link's geometry).");
   }
 
   // A body that moves needs mass: without an inertial the importer invents one.
@@ -191,7 +252,7 @@ class InertiaInvalid final : public Rule {
   static void report_singular(const Link& link, const Placement& placement, const Eigen::Vector3d& moments,
                               double relative, Reporter& out) {
     const Inertial& inertial = *link.inertial;
-    const bool pasted = all_entries_equal(inertial.inertia);
+    const bool pasted = physics::pasted_tensor(inertial.inertia);
     // Welded to another body a rank-deficient tensor is merged harmlessly; say so only when
     // it is the tell-tale pasted value.
     if (placement.role != Role::BodyStart && !pasted) return;

@@ -19,6 +19,7 @@ class JointMaxVelocity final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
     const Joint* spec = physics::spec_joint(asset, settings);
     const bool usd = asset.format == SourceFormat::Usda;
     bool placeholder_reported = false;

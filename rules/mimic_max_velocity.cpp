@@ -22,6 +22,7 @@ class MimicMaxVelocity final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings&, Reporter& out) const override {
+    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !is_single_dof(joint.type) || !joint.velocity || !joint.velocity->span.valid()) continue;
       const Quantity& velocity = *joint.velocity;

@@ -11,6 +11,7 @@ extern const RuleInfo kLayerUnresolved;
 extern const RuleInfo kStaleSchemaAttribute;
 extern const RuleInfo kMimicAxisInstance;
 extern const RuleInfo kUnusedSuppression;
+extern const RuleInfo kMjcfUnsupported;
 extern const RuleInfo kDriveInstanceIgnored;
 extern const RuleInfo kMimicLimitsRequired;
 

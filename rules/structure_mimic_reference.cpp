@@ -77,8 +77,11 @@ class StructureMimicReference final : public Rule {
                                                                      joint_label(joint), mimic.reference.text));
         if (const Joint* guess = closest_joint(asset, joint, mimic.reference.text))
           d.note(guess->name.span, fmt::format("Did you mean '{}'?", guess->name.text));
-        d.note("urdfdom accepts the file, but the joint follows nothing: it moves freely or stays where the "
-               "simulator leaves it.");
+        if (asset.format == SourceFormat::Mjcf)
+          d.note("MuJoCo's compiler rejects an equality constraint that names an undefined joint.");
+        else
+          d.note(fmt::format("{}the joint follows nothing: it moves freely or stays where the simulator leaves it.",
+                             asset.format == SourceFormat::Urdf ? "urdfdom accepts the file, but " : "The file loads, but "));
       } else if (reference->is_mimic()) {
         out.report(mimic.reference.span, fmt::format("{} mimics '{}', which itself mimics '{}'", joint_label(joint),
                                                      reference->name.text, reference->mimic->reference.text))

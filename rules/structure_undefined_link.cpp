@@ -36,7 +36,7 @@ class StructureUndefinedLink final : public Rule {
     for (const Joint& joint : asset.joints) {
       for (const auto& [role, link] : {std::pair{"parent", &joint.parent}, std::pair{"child", &joint.child}}) {
         if (link->text.empty()) {
-          // USD: no body, or a static prim, anchors the joint to the world.
+          // USD: no body, or a static prim, anchors the joint to the world; MJCF: the worldbody.
           if (!urdf) continue;
           out.report(link->span, fmt::format("{} names no {} link", joint_label(joint), role));
         } else if (!asset.find_link(link->text)) {

@@ -59,6 +59,7 @@ class UnitsVelocityImplausible final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
     const double min_time = rule_option(info_, settings, "min_traversal_time_s");
     const double max_time = rule_option(info_, settings, "max_traversal_time_s");
     const double placeholder = rule_option(info_, settings, "placeholder_velocity");

@@ -20,7 +20,8 @@ namespace {
 std::vector<std::filesystem::path> fixture_assets() {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(test::fixtures_dir())) {
-    if (entry.is_regular_file() && file_kind(entry.path().string()) != FileKind::Unsupported)
+    if (entry.is_regular_file() &&
+        file_kind(entry.path().string(), test::read_file(entry.path())) != FileKind::Unsupported)
       files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());

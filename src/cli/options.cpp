@@ -13,7 +13,7 @@ namespace assetlint::cli {
 namespace {
 
 void add_options(CLI::App& app, Options& o) {
-  app.add_option("paths", o.paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
+  app.add_option("paths", o.paths, "Files or directories to check (directories: every *.urdf, *.usda, *.mjcf and MJCF *.xml below)");
   app.add_option("--select", o.select, "Only these rules (comma list, globs such as 'mimic-*')")
       ->delimiter(',')
       ->allow_extra_args(false);
@@ -71,6 +71,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--fix", o.fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", o.unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", o.diff, "Print a unified diff of what --fix would change; write nothing");
+  app.add_option("--map", o.map_pairs, "compare: pair a name of the first file with one of another (a=b)")
+      ->allow_extra_args(false);
+  app.add_option("--rtol", o.rtol, "compare: relative tolerance (default 1e-6)")->check(CLI::PositiveNumber);
+  app.add_option("--fix-side", o.fix_side, "compare: the file whose values --fix rewrites");
   app.add_flag("--add-suppressions", o.add_suppressions,
                "Add an inline suppression comment for every current finding (in each file's own syntax)");
   app.add_flag("--list-rules", o.list_rules, "List every rule and exit (--output-format json: as JSON)");
@@ -79,7 +83,7 @@ void add_options(CLI::App& app, Options& o) {
                  "Print the settings a check of FILE would use, each with where it came from, and exit");
   app.add_flag("--version", o.version, "Print the version and exit");
   app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
       "Exit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
       "remain, 2 usage, configuration or I/O error.\n"
       "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");

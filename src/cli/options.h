@@ -31,6 +31,10 @@ struct Options {
   std::optional<double> timesteps_per_second;
   std::optional<unsigned> position_iterations;
   unsigned jobs = 1;
+  // asset-lint compare
+  std::vector<std::string> map_pairs;  // --map a=b
+  double rtol = 1e-6;
+  std::string fix_side;
 };
 
 // Parses `args` (after the command word). On --help prints the help to `out`; on a

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "formats/suppressions.h"
-#include "formats/urdf/xml_scanner.h"
+#include "formats/xml/xml_scanner.h"
 #include "formats/usda/parser.h"
 
 namespace assetlint {
@@ -28,7 +28,7 @@ bool starts_at(std::string_view text, std::size_t at, std::string_view prefix) {
 // Elements with their whole range (start tag through end tag) and attribute values, from
 // the scanner's start tags and the end tags between them.
 void xml_units(std::string_view text, std::vector<Unit>& units) {
-  const urdf::XmlScan scan = urdf::scan_xml(text);
+  const xml::XmlScan scan = xml::scan_xml(text);
   struct Open {
     std::string_view name;
     std::size_t unit;
@@ -61,7 +61,7 @@ void xml_units(std::string_view text, std::vector<Unit>& units) {
     close_in(previous_end, tag.offset);
     const bool self_closing = tag.end >= 2 && text[tag.end - 2] == '/';
     Unit element{tag.offset, self_closing ? tag.end : text.size(), "", std::string(tag.name), true};
-    const urdf::XmlAttributeSpan* name = tag.attribute("name");
+    const xml::XmlAttributeSpan* name = tag.attribute("name");
     if (!name) name = tag.attribute("reference");  // <gazebo reference="link">
     if (name) {
       element.element = fmt::format("{} '{}'", tag.name, text.substr(name->value_offset, name->value_length));

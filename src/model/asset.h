@@ -14,7 +14,7 @@
 
 namespace assetlint {
 
-enum class SourceFormat { Urdf, Usda };
+enum class SourceFormat { Urdf, Usda, Mjcf };
 
 struct Name {
   std::string text;
@@ -111,6 +111,7 @@ struct Joint {
   OptQuantity velocity;    // max joint velocity: rad/s or m/s
   OptQuantity joint_damping;   // URDF <dynamics damping>
   OptQuantity joint_friction;
+  OptQuantity joint_stiffness;  // MJCF passive spring toward springref: N·m/rad or N/m
   OptQuantity armature;    // kg·m² or kg
   std::optional<Motor> motor;
   std::optional<Drive> drive;

@@ -9,7 +9,14 @@
 
 namespace assetlint::physics {
 
-std::string_view solver_name(Solver solver) { return solver == Solver::TGS ? "TGS" : "PGS"; }
+std::string_view solver_name(Solver solver) {
+  switch (solver) {
+    case Solver::TGS: return "TGS";
+    case Solver::PGS: return "PGS";
+    case Solver::MuJoCo: return "MuJoCo";
+  }
+  return "";
+}
 
 int SimulationRate::iterations() const {
   double n = position_iterations;
@@ -34,6 +41,7 @@ std::string SimulationRate::step_text() const {
 
 std::string SimulationRate::describe() const {
   const std::string rate = fmt::format("{} Hz ({})", format_number(timesteps_per_second), rate_origin);
+  if (solver == Solver::MuJoCo) return fmt::format("MuJoCo, h = timestep = {} ({})", seconds(h()), rate);
   if (solver == Solver::PGS)
     return fmt::format("PGS ({}), h = dt = {} ({})", solver_origin, seconds(h()), rate);
   std::string count = fmt::format("{} position iterations ({})", format_number(position_iterations), iterations_origin);
@@ -45,7 +53,8 @@ std::string SimulationRate::describe() const {
 SimulationRate effective_simulation(const Asset& asset, const Settings& settings) {
   SimulationRate rate;
   const auto where = [&](const Span& span) {
-    return span.valid() ? fmt::format("{}:{}", asset.source(span.file).path(), span.line) : std::string("stage default");
+    if (span.valid()) return fmt::format("{}:{}", asset.source(span.file).path(), span.line);
+    return std::string(asset.format == SourceFormat::Mjcf ? "MuJoCo's default timestep" : "stage default");
   };
   // The stage's own value wins, then configuration; the defaults stay otherwise.
   const auto pick = [&](const OptQuantity& stage, const std::optional<Configured<double>>& configured, double& value,
@@ -67,7 +76,9 @@ SimulationRate effective_simulation(const Asset& asset, const Settings& settings
   if (asset.scene.min_position_iterations) rate.min_position_iterations = asset.scene.min_position_iterations->value;
   if (asset.scene.max_position_iterations) rate.max_position_iterations = asset.scene.max_position_iterations->value;
   if (!asset.scene.solver.empty()) {
-    rate.solver = asset.scene.solver == "PGS" ? Solver::PGS : Solver::TGS;
+    rate.solver = asset.scene.solver == "PGS"      ? Solver::PGS
+                  : asset.scene.solver == "MuJoCo" ? Solver::MuJoCo
+                                                   : Solver::TGS;
     rate.solver_origin = where(asset.scene.solver_span);
   } else if (settings.simulation.solver) {
     rate.solver = settings.simulation.solver->value == "PGS" ? Solver::PGS : Solver::TGS;

@@ -12,7 +12,8 @@
 
 namespace assetlint::physics {
 
-enum class Solver { TGS, PGS };
+// MuJoCo: an MJCF model; one integration step per <option timestep>, no iterations divide it.
+enum class Solver { TGS, PGS, MuJoCo };
 std::string_view solver_name(Solver solver);
 
 // Time step, solver and iteration counts in effect, each with where it came from: the

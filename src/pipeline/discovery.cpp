@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "engine/file_system.h"
 #include "formats/file_kind.h"
 #include "pipeline/gitignore.h"
 
@@ -27,6 +28,12 @@ const config::FileSelection& default_selection() {
     return config::effective_file_selection(std::nullopt, {}, fs::current_path(ec).string());
   }();
   return selection;
+}
+
+bool mjcf_text(const fs::path& path) {
+  std::string error;
+  auto text = disk().read(path.string(), error);
+  return text && file_kind(path.string(), *text) == FileKind::Mjcf;
 }
 
 struct Walk {
@@ -55,6 +62,10 @@ struct Walk {
         else out.binary_usd.push_back(spelled(path, cwd));
         break;
       case FileKind::BinaryUsd: out.binary_usd.push_back(spelled(path, cwd)); break;
+      case FileKind::Mjcf:
+        // A .xml is an asset only when its root is <mujoco> (not launch files, not URDFs named .xml).
+        if (extension_of(path.string()) != ".xml" || mjcf_text(path)) found.push_back(spelled(path, cwd));
+        break;
       case FileKind::Unsupported: break;
     }
   }

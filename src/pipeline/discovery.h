@@ -33,8 +33,8 @@ std::string spelled(const std::filesystem::path& path, const std::filesystem::pa
 // .gitignore respected).
 using SelectionFor = std::function<const config::FileSelection&(const std::string& path)>;
 
-// Files as given (spelled as above); directories searched recursively for *.urdf, *.usda
-// and text .usd files (a `#usda` header), leaving out what `exclude` names and, inside a
+// Files as given (spelled as above); directories searched recursively for *.urdf, *.usda,
+// text .usd files (a `#usda` header), *.mjcf and *.xml whose root is <mujoco>, leaving out what `exclude` names and, inside a
 // git work tree, what .gitignore files ignore. A named file (or directory) is left out
 // only with force_exclude. A directory or entry that cannot be read is an error naming
 // it; the rest of the walk goes on.

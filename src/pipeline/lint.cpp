@@ -13,6 +13,7 @@
 #include "config/project_root.h"
 #include "engine/rule.h"
 #include "formats/file_kind.h"
+#include "formats/mjcf/mjcf_reader.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "pipeline/suppressions.h"
@@ -25,6 +26,9 @@ ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const So
                 const FileSystem& files, const Settings& settings) {
   switch (kind) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
+    case FileKind::Mjcf:
+      return mjcf::read_mjcf(std::move(file), files,
+                             mjcf::ReadOptions{config::checked_root(path, settings), settings.allow_outside_root});
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files,
                              usda::ComposeOptions{config::checked_root(path, settings), settings.allow_outside_root});
@@ -44,14 +48,16 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 
 // The reader for `path` (text USD is told from binary by its first bytes), or why none.
 std::optional<std::string> kind_of(const std::string& path, std::string_view text, FileKind& kind) {
-  kind = file_kind(path);
+  kind = file_kind(path, text);
   if (kind == FileKind::Usd) kind = usd_kind(text);
   if (kind == FileKind::BinaryUsd)
     return fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting with '#usda "
                        "1.0')", path);
+  if (kind == FileKind::Unsupported && extension_of(path) == ".xml")
+    return std::string("not a robot model: the root element of this .xml file is neither <mujoco> nor <robot>");
   if (kind == FileKind::Unsupported)
-    return fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda and text .usd files)",
-                       extension_of(path));
+    return fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda, text .usd, .mjcf and MJCF .xml "
+                       "files)", extension_of(path));
   return std::nullopt;
 }
 
@@ -87,6 +93,16 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   report.diagnostics = std::move(diagnostics);
   report.sources = std::move(result.asset.sources);
   return report;
+}
+
+std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
+                                     const FileSystem& files) {
+  LoadedAsset loaded = load_asset(path, settings, files);
+  if (loaded.error) {
+    error = std::move(*loaded.error);
+    return std::nullopt;
+  }
+  return std::move(loaded.read);
 }
 
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files) {

@@ -24,6 +24,11 @@ struct FileReport {
   const SourceFile& source(FileId id) const { return *sources.at(id); }
 };
 
+// Reads a file into the model (with the configuration's [drives.*] applied) without
+// running the rules; nullopt with `error` set when it cannot be read or is not a model.
+std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
+                                     const FileSystem& files = disk());
+
 // Reads and lints one file (through `files`, the disk by default).
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files = disk());
 // Lints text as if it were the file `path` (its extension picks the reader).

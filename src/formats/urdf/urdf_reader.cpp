@@ -5,10 +5,10 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <unordered_map>
+#include <memory>
 
 #include "formats/urdf/urdfdom_check.h"
-#include "formats/urdf/xml_scanner.h"
+#include "formats/xml/xml_document.h"
 #include "rules/reader_rules.h"
 #include "util/numbers.h"
 
@@ -27,24 +27,13 @@ class UrdfReader {
   }
 
   ReadResult run() {
-    const std::string_view text = file_.view();
-    scan_ = scan_xml(text);
-    for (const auto& problem : scan_.problems) parse_error(file_.span(kFile, problem.offset, problem.length), problem.message);
-    if (!scan_.recoverable) return fail();
-
-    const std::string_view document = text.substr(scan_.document_begin, scan_.document_end - scan_.document_begin);
-    tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
-    if (doc.Parse(document.data(), document.size()) != tinyxml2::XML_SUCCESS) {
-      const int line_in_document = std::max(1, doc.ErrorLineNum());
-      const std::uint32_t line = file_.position(scan_.document_begin).line + static_cast<std::uint32_t>(line_in_document) - 1;
-      parse_error(file_.span(kFile, file_.line_start(line), 0), fmt::format("not well-formed XML: {}", doc.ErrorStr()));
-      return fail();
-    }
-    index_elements(doc.RootElement());
-    const XMLElement* robot = doc.RootElement();
-    if (!robot || std::string_view(robot->Name()) != "robot") {
+    doc_ = std::make_unique<xml::XmlDocument>(file_, kFile);
+    for (const auto& error : doc_->errors()) parse_error(error.span, error.message);
+    const XMLElement* robot = doc_->root();
+    if (!robot) return fail();
+    if (std::string_view(robot->Name()) != "robot") {
       parse_error(element_span(robot),
-                  fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot ? robot->Name() : ""));
+                  fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot->Name()));
       return fail();
     }
     if (find_xacro(robot)) return fail();
@@ -56,7 +45,7 @@ class UrdfReader {
       if (tag == "link") read_link(el);
       else if (tag == "joint") read_joint(el);
     }
-    check_with_urdfdom(document);
+    check_with_urdfdom(doc_->document());
     return std::move(result_);
   }
 
@@ -71,41 +60,9 @@ class UrdfReader {
                                    std::move(message), std::nullopt, {}});
   }
 
-  // Pairs each tinyxml2 element with the scanner's start tag: both list elements in
-  // document order, so the n-th element of a pre-order walk is the n-th start tag.
-  void index_elements(const XMLElement* root) {
-    std::size_t next = 0;
-    bool consistent = true;
-    auto visit = [&](auto&& self, const XMLElement* el) -> void {
-      if (!el) return;
-      if (next < scan_.tags.size() && scan_.tags[next].name == el->Name()) tags_[el] = &scan_.tags[next];
-      else consistent = false;
-      ++next;
-      for (const XMLElement* c = el->FirstChildElement(); c; c = c->NextSiblingElement()) self(self, c);
-    };
-    visit(visit, root);
-    if (!consistent) tags_.clear();  // positions fall back to line starts
-  }
-
-  Span element_span(const XMLElement* el) const {
-    if (!el) return file_.span(kFile, scan_.document_begin, 0);
-    if (auto it = tags_.find(el); it != tags_.end())
-      return file_.span(kFile, it->second->offset, it->second->end - it->second->offset);
-    const auto line = file_.position(scan_.document_begin).line + static_cast<std::uint32_t>(el->GetLineNum()) - 1;
-    return file_.span(kFile, file_.line_start(line), 0);
-  }
-
-  // The span of an attribute's value without surrounding spaces.
-  Span value_span(const XMLElement* el, std::string_view attr) const {
-    auto it = tags_.find(el);
-    if (it == tags_.end()) return element_span(el);
-    const XmlAttributeSpan* a = it->second->attribute(attr);
-    if (!a) return element_span(el);
-    const std::string_view raw = file_.view().substr(a->value_offset, a->value_length);
-    const std::string_view trimmed = trim(raw);
-    const std::size_t lead = trimmed.empty() ? 0 : static_cast<std::size_t>(trimmed.data() - raw.data());
-    return file_.span(kFile, a->value_offset + lead, trimmed.size());
-  }
+  Span element_span(const XMLElement* el) const { return doc_->element_span(el); }
+  Span value_span(const XMLElement* el, std::string_view attr) const { return doc_->value_span(el, attr); }
+  Span attribute_span(const XMLElement* el, std::string_view attr) const { return doc_->attribute_span(el, attr); }
 
   Name name_of(const XMLElement* el) const {
     const char* name = el->Attribute("name");
@@ -125,15 +82,6 @@ class UrdfReader {
     Quantity q = Quantity::from_authored(*value, unit, span);
     q.declaration = attribute_span(el, attr);
     return q;
-  }
-
-  // The whole `name="value"` text of an attribute.
-  Span attribute_span(const XMLElement* el, std::string_view attr) const {
-    auto it = tags_.find(el);
-    if (it == tags_.end()) return element_span(el);
-    const XmlAttributeSpan* a = it->second->attribute(attr);
-    if (!a) return element_span(el);
-    return file_.span(kFile, a->name_offset, a->value_offset + a->value_length + 1 - a->name_offset);
   }
 
   std::optional<Eigen::Vector3d> vector3(const XMLElement* el, const char* attr) {
@@ -366,21 +314,20 @@ class UrdfReader {
       if (const Link* l = result_.asset.find_link(name)) return l->name.span;
     // An element the model leaves out (a joint of unknown type): its name attribute.
     for (auto name : names)
-      for (const auto& tag : scan_.tags)
-        if (const XmlAttributeSpan* a = tag.attribute("name");
+      for (const auto& tag : doc_->scan().tags)
+        if (const xml::XmlAttributeSpan* a = tag.attribute("name");
             a && trim(file_.view().substr(a->value_offset, a->value_length)) == name)
           return file_.span(kFile, a->value_offset, a->value_length);
     // A quoted element name ("Unknown geometry type 'capsule'"): its first occurrence.
     for (auto name : names)
-      for (const auto& tag : scan_.tags)
+      for (const auto& tag : doc_->scan().tags)
         if (tag.name == name) return file_.span(kFile, tag.offset, tag.end - tag.offset);
     return result_.asset.robot_span;
   }
 
   const SourceFile& file_;
   ReadResult result_;
-  XmlScan scan_;
-  std::unordered_map<const XMLElement*, const XmlStartTag*> tags_;
+  std::unique_ptr<xml::XmlDocument> doc_;
 };
 
 }  // namespace

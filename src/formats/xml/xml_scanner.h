@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace assetlint::urdf {
+namespace assetlint::xml {
 
 struct XmlAttributeSpan {
   std::string_view name;
@@ -44,4 +44,4 @@ struct XmlScan {
 
 XmlScan scan_xml(std::string_view text);
 
-}  // namespace assetlint::urdf
+}  // namespace assetlint::xml

@@ -1,8 +1,8 @@
-#include "formats/urdf/xml_scanner.h"
+#include "formats/xml/xml_scanner.h"
 
 #include <fmt/format.h>
 
-namespace assetlint::urdf {
+namespace assetlint::xml {
 namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
@@ -303,4 +303,4 @@ XmlScan scan_xml(std::string_view text) {
   return scan;
 }
 
-}  // namespace assetlint::urdf
+}  // namespace assetlint::xml
