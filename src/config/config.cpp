@@ -18,7 +18,7 @@ struct Invalid {
 class Loader {
  public:
   Loader(std::string path, Settings& settings, FileSelectionConfig* files, std::filesystem::path base)
-      : path_(std::move(path)), settings_(settings), files_(files), base_(std::move(base)) {}
+      : files_(files), base_(std::move(base)), path_(std::move(path)), settings_(settings) {}
 
   void load(const toml::table& root) {
     for (const auto& [key, node] : root) {
