@@ -9,6 +9,7 @@ packages=(
   liburdfdom-dev libtinyxml2-dev libeigen3-dev libfmt-dev libcli11-dev
   catch2 libtomlplusplus-dev nlohmann-json3-dev
   libmujoco-dev
+  librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot
 )
 
 # Optional tools some tests use when present (they warn and skip otherwise). Installing

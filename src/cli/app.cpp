@@ -17,6 +17,7 @@
 #include "commands/exit_status.h"
 #include "commands/fix.h"
 #include "commands/stdin.h"
+#include "commands/simulate.h"
 #include "commands/tune.h"
 #include "config/project_root.h"
 #include "config/resolver.h"
@@ -158,6 +159,8 @@ int run(const std::vector<std::string>& args, std::istream& in, std::ostream& ou
   if (!args.empty() && args.front() == "compare")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
   if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
+  if (!args.empty() && args.front() == "simulate")
+    return commands::run_simulate({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "check")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal);
   return run_check_command(args, in, out, err, out_is_terminal);
