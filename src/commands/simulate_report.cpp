@@ -195,6 +195,11 @@ std::string simulation_svg(const SimulationContext& c, const SimulationSetup& s,
           force.bands.push_back({run.implicit[i - 1].time, run.implicit[i].time, "#862e9c"});
       }
     force.band_label = "implicit drive at max force";
+  } else {
+    // No force limit: keep a diverging explicit spring from setting the scale; the spring
+    // force over the whole step bounds what a sane drive shows.
+    const double bound = std::max(2 * run.implicit_metrics.peak_force, s.row.stiffness * std::abs(s.target - s.from));
+    if (bound > 0) force.clip = std::pair{-bound, bound};
   }
   if (std::isfinite(s.limits.max_velocity)) {
     for (std::size_t i = 1; i < run.implicit.size(); ++i)
