@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "physics/drive.h"
@@ -22,22 +23,48 @@ struct CopiedFrom {
   std::string text;  // the gain as written
 };
 
-std::optional<CopiedFrom> find_copy(const Asset& asset, double value) {
-  for (const Joint& joint : asset.joints) {
-    for (const auto& [drive, inactive] : {std::pair{&joint.drive, false}, std::pair{&joint.inactive_drive, true}}) {
-      if (!*drive) continue;
-      for (const auto& [gain, what] : {std::pair{&(*drive)->stiffness, "stiffness"}, std::pair{&(*drive)->damping, "damping"}}) {
-        if (!*gain) continue;
-        const Quantity& q = **gain;
-        // Either as written or in the other unit (per degree ↔ per radian).
-        const double candidates[] = {q.authored, q.value, from_model_units(q.value, Unit::NewtonMeterPerDegree)};
-        for (double candidate : candidates)
-          if (candidate != 0 && same(value, candidate)) return CopiedFrom{&joint, what, inactive, describe(q)};
+// Every drive gain of the asset, sorted by value, so that each mimic value is looked up
+// in O(log n) instead of a walk over all joints.
+class GainTable {
+ public:
+  explicit GainTable(const Asset& asset) {
+    std::size_t order = 0;
+    for (const Joint& joint : asset.joints) {
+      for (const auto& [drive, inactive] : {std::pair{&joint.drive, false}, std::pair{&joint.inactive_drive, true}}) {
+        if (!*drive) continue;
+        for (const auto& [gain, what] : {std::pair{&(*drive)->stiffness, "stiffness"}, std::pair{&(*drive)->damping, "damping"}}) {
+          if (!*gain) continue;
+          const Quantity& q = **gain;
+          // Either as written or in the other unit (per degree ↔ per radian).
+          const double candidates[] = {q.authored, q.value, from_model_units(q.value, Unit::NewtonMeterPerDegree)};
+          for (double candidate : candidates)
+            if (candidate != 0 && !std::isnan(candidate)) entries_.push_back({candidate, order++, CopiedFrom{&joint, what, inactive, describe(q)}});
+        }
       }
     }
+    std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.value < b.value; });
   }
-  return std::nullopt;
-}
+
+  // The first gain in document order that `value` repeats.
+  std::optional<CopiedFrom> find(double value) const {
+    const double reach = std::isfinite(value) ? 2e-6 * std::fabs(value) : 0.0;
+    auto it = std::lower_bound(entries_.begin(), entries_.end(), value - reach,
+                               [](const Entry& e, double v) { return e.value < v; });
+    const Entry* best = nullptr;
+    for (; it != entries_.end() && it->value <= value + reach; ++it)
+      if (same(value, it->value) && (!best || it->order < best->order)) best = &*it;
+    if (!best) return std::nullopt;
+    return best->from;
+  }
+
+ private:
+  struct Entry {
+    double value;
+    std::size_t order;
+    CopiedFrom from;
+  };
+  std::vector<Entry> entries_;
+};
 
 // The guide: "natural frequency is not stiffness, and damping ratio is not damping".
 // A mimic's compliance copied from a drive's gains, or physically implausible.
@@ -48,6 +75,7 @@ class MimicCopiedDriveGains final : public Rule {
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double max_ratio = rule_option(info_, settings, "max_damping_ratio");
     const double bound = physics::effective_simulation(asset, settings).optimistic_bound();
+    std::optional<GainTable> gains;
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !joint.mimic->natural_frequency || !joint.mimic->damping_ratio) continue;
       const Quantity& nf = *joint.mimic->natural_frequency;
@@ -55,8 +83,9 @@ class MimicCopiedDriveGains final : public Rule {
       if (nf.value <= 0 || dr.value <= 0) continue;  // a hard constraint, as the guide recommends to start
 
       std::vector<std::string> problems;
-      const auto nf_copy = find_copy(asset, nf.value);
-      const auto dr_copy = find_copy(asset, dr.value);
+      if (!gains) gains.emplace(asset);
+      const auto nf_copy = gains->find(nf.value);
+      const auto dr_copy = gains->find(dr.value);
       auto copied = [&](const char* name, const Quantity& q, const CopiedFrom& from) {
         return fmt::format("{} {} equals the {}{} {} of '{}'", name, format_number(q.value, 6),
                            from.inactive ? "stale (unapplied) drive " : "drive ", from.what, from.text,
@@ -77,7 +106,7 @@ class MimicCopiedDriveGains final : public Rule {
       message += "; natural frequency is not stiffness and damping ratio is not damping";
 
       // Converted from the followed joint's drive over the coupled set's inertia.
-      const Joint* driver = asset.find_joint(joint.mimic->reference.text);
+      const Joint* driver = asset.followed_joint(joint);
       const physics::EffectiveInertia inertia = physics::effective_inertia(asset, joint);
       std::optional<Fix> fix;
       if (driver && driver->drive && driver->drive->stiffness && driver->drive->stiffness->value > 0 && inertia.known) {

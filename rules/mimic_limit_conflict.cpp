@@ -19,7 +19,7 @@ class MimicLimitConflict final : public Rule {
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || joint.type == JointType::Continuous || !is_single_dof(joint.type) || !joint.lower || !joint.upper)
         continue;
-      const Joint* reference = asset.find_joint(joint.mimic->reference.text);
+      const Joint* reference = asset.followed_joint(joint);
       if (!reference || reference->type == JointType::Continuous || !is_single_dof(reference->type) || !reference->lower ||
           !reference->upper)
         continue;

@@ -25,7 +25,7 @@ class MimicMaxVelocity final : public Rule {
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !is_single_dof(joint.type) || !joint.velocity || !joint.velocity->span.valid()) continue;
       const Quantity& velocity = *joint.velocity;
-      const Joint* reference = asset.find_joint(joint.mimic->reference.text);
+      const Joint* reference = asset.followed_joint(joint);
       const double gearing = std::fabs(joint.mimic->multiplier.value);
       const Quantity* reference_velocity =
           reference && is_single_dof(reference->type) && reference->velocity && reference->velocity->value > 0 ? &*reference->velocity : nullptr;

@@ -187,10 +187,14 @@ std::string ConfigError::to_string() const {
   return line ? fmt::format("{}:{}:{}: {}", path, line, column, message) : fmt::format("{}: {}", path, message);
 }
 
-std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path) {
+namespace {
+
+template <class Parse>
+std::optional<ConfigError> load_with(Parse parse, const std::string& path, Settings& settings,
+                                     const std::string& display_path) {
   Settings updated = settings;
   try {
-    toml::table root = toml::parse_file(path);
+    toml::table root = parse();
     Loader(display_path.empty() ? path : display_path, updated).load(root);
   } catch (const toml::parse_error& error) {
     return ConfigError{path, static_cast<std::uint32_t>(error.source().begin.line),
@@ -202,6 +206,17 @@ std::optional<ConfigError> load(const std::string& path, Settings& settings, con
   updated.config_path = path;
   settings = std::move(updated);
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path) {
+  return load_with([&] { return toml::parse_file(path); }, path, settings, display_path);
+}
+
+std::optional<ConfigError> load_text(std::string_view text, const std::string& path, Settings& settings,
+                                     const std::string& display_path) {
+  return load_with([&] { return toml::parse(text, path); }, path, settings, display_path);
 }
 
 std::filesystem::path discover(const std::filesystem::path& file) {

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/settings.h"
@@ -21,6 +22,10 @@ struct ConfigError {
 // Unknown keys and bad values are errors; nothing is applied when there is one.
 // Origins in messages name the file as `display_path` (default: `path`).
 std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path = "");
+
+// The same for configuration text already in memory; `path` names it in errors.
+std::optional<ConfigError> load_text(std::string_view text, const std::string& path, Settings& settings,
+                                     const std::string& display_path = "");
 
 // The nearest asset-lint.toml in the file's directory or an ancestor; empty if none.
 std::filesystem::path discover(const std::filesystem::path& file);

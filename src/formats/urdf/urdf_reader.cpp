@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "formats/urdf/urdfdom_check.h"
+#include "formats/urdf/urdfdom_verdict.h"
 #include "formats/urdf/xml_scanner.h"
 #include "rules/reader_rules.h"
 #include "util/numbers.h"
@@ -47,7 +48,7 @@ class UrdfReader {
                   fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot ? robot->Name() : ""));
       return fail();
     }
-    if (find_xacro(robot)) return fail();
+    if (may_hold_xacro(document) && find_xacro(robot)) return fail();
 
     result_.asset.robot_name = name_of(robot);
     result_.asset.robot_span = element_span(robot);
@@ -56,6 +57,8 @@ class UrdfReader {
       if (tag == "link") read_link(el);
       else if (tag == "joint") read_joint(el);
     }
+    result_.asset.index_names();
+    if (!urdfdom_needed(document, robot)) return std::move(result_);
     check_with_urdfdom(document);
     return std::move(result_);
   }
@@ -161,6 +164,14 @@ class UrdfReader {
                           .toRotationMatrix();
     }
     return pose;
+  }
+
+  // Whether find_xacro has anything to find: a walk over every attribute of a large file
+  // costs more than searching its bytes (entities could spell "${", so '&' counts too).
+  static bool may_hold_xacro(std::string_view document) {
+    for (std::string_view marker : {"<xacro:", "${", "$(", "&"})
+      if (document.find(marker) != std::string_view::npos) return true;
+    return false;
   }
 
   bool find_xacro(const XMLElement* el) {
@@ -298,6 +309,20 @@ class UrdfReader {
     armature.value = rotor->value * gear * gear;
     joint.armature = armature;
     joint.motor = Motor{*rotor, gear, fmt::format("<drake:rotor_inertia> and <drake:gear_ratio> at line {}", rotor->span.line)};
+  }
+
+  // urdfdom runs unless its verdict is certainly "accepted" (src/formats/urdf/urdfdom_verdict.h):
+  // then it would add nothing.
+  bool urdfdom_needed(std::string_view document, const XMLElement* robot) const {
+    if (!scan_.problems.empty() || tags_.empty()) return true;
+    const RawAttribute raw = [this](const XMLElement* el, std::string_view attr) -> std::optional<std::string_view> {
+      auto it = tags_.find(el);
+      if (it == tags_.end()) return std::nullopt;
+      const XmlAttributeSpan* a = it->second->attribute(attr);
+      if (!a) return std::nullopt;
+      return file_.view().substr(a->value_offset, a->value_length);
+    };
+    return !urdfdom_certainly_accepts(document, robot, raw);
   }
 
   // Runs urdfdom and places each of its complaints on the joint or link it names.

@@ -86,6 +86,7 @@ class Reader {
       if (prim.has_api_schema("PhysxArticulationAPI") && !result_.asset.scene.position_iterations)
         result_.asset.scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
     }
+    result_.asset.index_names();
     return std::move(result_);
   }
 
