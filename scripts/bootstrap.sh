@@ -16,8 +16,34 @@ packages=(
 # them is best effort: a failure here never fails the bootstrap.
 #  - pre-commit (Debian package, ~12 small Python packages): the .pre-commit-hooks.yaml test;
 #  - the SARIF Multitool (npm, a self-contained .NET binary, ~100 MB) into tools/node_modules
-#    (git-ignored): validates the SARIF output. Skipped without npm, or with
-#    ASSET_LINT_SKIP_OPTIONAL=1.
+#    (git-ignored): validates the SARIF output;
+#  - physx-js-webidl 2.7.3 (npm, PhysX 5.6.1 compiled to WASM, ~10 MB) into tools/node_modules:
+#    the reference engine tests/physx_reference_test.cpp holds the drive model to (run with
+#    `node`, looked up on PATH).
+# The npm packages are skipped without npm, or with ASSET_LINT_SKIP_OPTIONAL=1.
+npm_tools=(@microsoft/sarif-multitool-linux physx-js-webidl)
+
+# installed_version ROOT NAME: the version of npm package NAME in ROOT/tools/node_modules, or nothing.
+installed_version() {
+  local manifest="$1/tools/node_modules/$2/package.json"
+  [ -f "$manifest" ] && node -p "require(process.argv[1]).version" "$manifest" 2>/dev/null || true
+}
+
+# npm_install_tool ROOT NAME [VERSION]: installs npm package NAME into ROOT/tools/node_modules. An
+# npm install removes every package it does not name (there is no package.json here), so the
+# other npm tools already there are named too, pinned to their installed versions.
+npm_install_tool() {
+  local root="$1" spec="$2${3:+@$3}" keep=() name version
+  for name in "${npm_tools[@]}"; do
+    [ "$name" = "$2" ] && continue
+    version="$(installed_version "$root" "$name")"
+    [ -n "$version" ] && keep+=("$name@$version")
+  done
+  mkdir -p "$root/tools"
+  (cd "$root/tools" && timeout 600 npm install --no-save --no-audit --no-fund --prefix . \
+     "$spec" "${keep[@]}" >/dev/null 2>&1)
+}
+
 install_optional() {
   [ "${ASSET_LINT_SKIP_OPTIONAL:-0}" = "1" ] && return 0
   local root
@@ -44,13 +70,16 @@ install_optional() {
   local multitool="$root/tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool"
   if [ ! -x "$multitool" ] && command -v npm >/dev/null 2>&1; then
     echo "bootstrap: (optional) installing the SARIF Multitool into tools/node_modules"
-    mkdir -p "$root/tools"
-    if (cd "$root/tools" && timeout 600 npm install --no-save --no-audit --no-fund --prefix . \
-          @microsoft/sarif-multitool-linux >/dev/null 2>&1); then
+    if npm_install_tool "$root" @microsoft/sarif-multitool-linux; then
       chmod u+x "$multitool" 2>/dev/null || true
     else
       echo "bootstrap: warning: SARIF Multitool not installed; the SARIF validation test will be skipped"
     fi
+  fi
+  if command -v npm >/dev/null 2>&1 && [ "$(installed_version "$root" physx-js-webidl)" != "2.7.3" ]; then
+    echo "bootstrap: (optional) installing physx-js-webidl 2.7.3 (PhysX 5.6.1 in WASM) into tools/node_modules"
+    npm_install_tool "$root" physx-js-webidl 2.7.3 \
+      || echo "bootstrap: warning: physx-js-webidl not installed; the PhysX reference test will be skipped"
   fi
   return 0
 }

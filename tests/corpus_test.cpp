@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "test_support.h"
 
 using namespace assetlint;

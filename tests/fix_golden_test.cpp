@@ -14,7 +14,7 @@
 #include <set>
 
 #include "config/config.h"
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "fix/fixer.h"
 #include "fix/writer.h"
 #include "test_support.h"

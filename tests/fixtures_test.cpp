@@ -7,7 +7,8 @@
 #include <sstream>
 
 #include "config/config.h"
-#include "engine/linter.h"
+#include "pipeline/lint.h"
+#include "formats/file_kind.h"
 #include "report/text_reporter.h"
 #include "test_support.h"
 

@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "formats/urdf/urdf_reader.h"
 #include "physics/drive.h"
 #include "physics/gripper.h"

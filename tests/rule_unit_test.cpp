@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 using namespace assetlint;
 

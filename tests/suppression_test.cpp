@@ -4,8 +4,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "engine/linter.h"
-#include "engine/suppressions.h"
+#include "pipeline/lint.h"
+#include "formats/suppressions.h"
+#include "util/path_glob.h"
 #include "test_support.h"
 
 using namespace assetlint;

@@ -7,7 +7,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
+#include "formats/file_kind.h"
 #include "formats/usda/usd_reader.h"
 #include "engine/rule.h"
 #include "report/text_reporter.h"

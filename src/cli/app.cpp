@@ -1,247 +1,102 @@
 #include "cli/app.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
-#include <thread>
 
-#include "cli/rule_docs.h"
+#include "cli/options.h"
+#include "cli/report_writer.h"
+#include "cli/rule_pages.h"
+#include "commands/check.h"
+#include "commands/exit_status.h"
+#include "commands/fix.h"
 #include "config/resolver.h"
-#include "engine/linter.h"
-#include "fix/command.h"
-#include "report/concise_reporter.h"
-#include "report/github_reporter.h"
-#include "report/json_reporter.h"
-#include "report/junit_reporter.h"
-#include "report/sarif_reporter.h"
-#include "report/statistics.h"
-#include "report/summary.h"
-#include "report/text_reporter.h"
-#include "rules/registry.h"
-#include "util/numbers.h"
+#include "pipeline/discovery.h"
 
 namespace assetlint::cli {
 namespace {
 
-constexpr int kExitClean = 0;
-constexpr int kExitFindings = 1;
-constexpr int kExitError = 2;
+using commands::kExitClean;
+using commands::kExitError;
+using commands::kExitFindings;
 
-void list_rules(std::ostream& out) {
-  std::size_t width = 0;
-  for (const RuleInfo* rule : rules::catalog()) width = std::max(width, rule->id.size());
-  for (const RuleInfo* rule : rules::catalog()) {
-    out << fmt::format("{:<{}}  {:<7}  {:<7}  {}\n", rule->id, width, severity_name(rule->default_severity),
-                       rule->fixable ? "fixable" : "", rule->summary);
+int run_rule_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (args.size() != 2) {
+    err << "asset-lint: error: usage: asset-lint rule RULE-ID\n";
+    return kExitError;
   }
+  return show_rule(args[1], out, err);
 }
 
-int show_rule(const std::string& id, std::ostream& out, std::ostream& err) {
-  const RuleInfo* rule = rules::find_rule(id);
-  if (!rule) {
-    err << fmt::format("asset-lint: error: unknown rule '{}'; `asset-lint --list-rules` lists them\n", id);
-    return kExitError;
-  }
-  for (const auto& [doc_id, page] : rule_docs()) {
-    if (doc_id == id) {
-      out << page;
-      if (!page.empty() && page.back() != '\n') out << "\n";
-      break;
-    }
-  }
-  out << fmt::format("\nDefault severity: {}. Fix: {}.\n", severity_name(rule->default_severity),
-                     rule->fixable ? "available" : "none");
-  if (!rule->options.empty()) {
-    out << "Options ([rules." << rule->id << "] in asset-lint.toml):\n";
-    for (const auto& option : rule->options)
-      out << fmt::format("  {} = {}  {}\n", option.name, format_number(option.default_value, 6), option.description);
-  }
-  return kExitClean;
+bool use_color(const Options& options, bool out_is_terminal) {
+  return options.color == "always" ||
+         (options.color == "auto" && out_is_terminal && options.output_file.empty() && !std::getenv("NO_COLOR"));
 }
 
-// Each --select/--ignore pattern must name at least one rule: a typo would
-// otherwise silently select nothing.
-bool validate_patterns(const std::vector<std::string>& patterns, const char* flag, std::ostream& err) {
-  for (const auto& pattern : patterns) {
-    bool matched = false;
-    for (const RuleInfo* rule : rules::catalog()) matched = matched || glob_match(pattern, rule->id);
-    if (!matched) {
-      err << fmt::format("asset-lint: error: {} '{}' matches no rule; `asset-lint --list-rules` lists them\n", flag,
-                         pattern);
-      return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace
-
-int run(const std::vector<std::string>& raw_args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
-  std::vector<std::string> args = raw_args;
-  if (!args.empty() && args.front() == "rule") {
-    if (args.size() != 2) {
-      err << "asset-lint: error: usage: asset-lint rule RULE-ID\n";
-      return kExitError;
-    }
-    return show_rule(args[1], out, err);
-  }
-  if (!args.empty() && args.front() == "check") args.erase(args.begin());
-
-  CLI::App app{"asset-lint: checks robot assets (URDF, USDA) against PhysX joint-tuning guidance", "asset-lint"};
-  std::vector<std::string> paths;
-  std::vector<std::string> select, ignore;
-  std::string format = "text";
-  std::string color = "auto";
-  bool show_rules = false, show_version = false;
-  bool fix = false, unsafe_fixes = false, diff = false;
-  bool statistics = false, exit_zero = false, quiet = false;
-  std::string output_file;
-  std::string config_path;
-  bool allow_outside_root = false;
-  double timesteps = 0;
-  unsigned iterations = 0;
-  unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
-  app.add_option("paths", paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
-  app.add_option("--select", select, "Only these rules (comma list, globs such as 'mimic-*')")
-      ->delimiter(',')
-      ->allow_extra_args(false);
-  app.add_option("--ignore", ignore, "Skip these rules (comma list, globs)")->delimiter(',')->allow_extra_args(false);
-  app.add_option("--output-format", format, "Output format: text, concise, json, sarif, github or junit")
-      ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "junit"}));
-  app.add_option("--output-file", output_file, "Write the report to this file instead of standard output");
-  app.add_flag("--statistics", statistics, "Print the number of findings per rule instead of the findings");
-  app.add_flag("--exit-zero", exit_zero, "Exit 0 even when findings remain (still 2 on errors)");
-  app.add_flag("-q,--quiet", quiet, "Text output: only the findings, no summary line");
-  app.add_option("--color", color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
-  app.add_option("-j,--jobs", jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
-  app.add_option("--config", config_path, "Use this asset-lint.toml for every file (default: the nearest one above each file)")
-      ->check(CLI::ExistingFile);
-  app.add_option("--timesteps-per-second", timesteps, "Simulation rate, when the asset's stage authors none")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--position-iterations", iterations, "Solver position iterations, when the asset authors none")
-      ->check(CLI::Range(1u, 255u));
-  app.add_flag("--allow-outside-root", allow_outside_root,
-               "Let USD composition read layers outside the checked tree (the directory named, or the working "
-               "directory)");
-  app.add_flag("--fix", fix, "Apply the safe fixes in place, then report what remains");
-  app.add_flag("--unsafe-fixes", unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
-  app.add_flag("--diff", diff, "Print a unified diff of what --fix would change; write nothing");
-  app.add_flag("--list-rules", show_rules, "List every rule and exit");
-  app.add_flag("--version", show_version, "Print the version and exit");
-  app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
-      "Exit status: 0 nothing reported, 1 findings remain, 2 usage, configuration or I/O error.\n"
-      "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
-
-  std::vector<std::string> reversed(args.rbegin(), args.rend());
-  try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return kExitClean;
-  } catch (const CLI::ParseError& e) {
-    err << "asset-lint: error: " << e.what() << "\n";
-    return kExitError;
-  }
-  if (show_version) {
-    out << "asset-lint " << ASSET_LINT_VERSION << "\n";
-    return kExitClean;
-  }
-  if (show_rules) {
-    list_rules(out);
-    return kExitClean;
-  }
-  if (paths.empty()) {
-    err << "asset-lint: error: no files to check; usage: asset-lint [check] PATH...\n";
-    return kExitError;
-  }
-  if (!validate_patterns(select, "--select", err) || !validate_patterns(ignore, "--ignore", err)) return kExitError;
-  if (statistics && format != "text" && format != "concise" && format != "json") {
-    err << "asset-lint: error: --statistics works with --output-format text, concise or json\n";
-    return kExitError;
-  }
-  std::ofstream report_file;
-  if (!output_file.empty()) {
-    report_file.open(output_file, std::ios::binary | std::ios::trunc);
-    if (!report_file) {
-      err << fmt::format("asset-lint: error: cannot write '{}'\n", output_file);
-      return kExitError;
-    }
-  }
-  std::ostream& report_out = output_file.empty() ? out : report_file;
-
-  config::CommandLineOverrides overrides;
-  if (app.count("--select")) overrides.select = select;
-  if (app.count("--ignore")) overrides.ignore = ignore;
-  if (app.count("--timesteps-per-second")) overrides.timesteps_per_second = timesteps;
-  if (app.count("--position-iterations")) overrides.position_iterations = static_cast<double>(iterations);
-  overrides.allow_outside_root = allow_outside_root;
-  overrides.trees.push_back(std::filesystem::current_path().string());
-  for (const auto& path : paths)
-    if (std::filesystem::is_directory(path)) overrides.trees.push_back(path);
-  config::SettingsResolver resolver(overrides, config_path.empty() ? std::nullopt : std::optional(config_path));
-
-  const bool use_color = color == "always" || (color == "auto" && out_is_terminal && output_file.empty() &&
-                                               !std::getenv("NO_COLOR"));
-  auto write_report = [&](const std::vector<FileReport>& reports) {
-    if (statistics && format == "json") write_statistics_json(report_out, reports);
-    else if (statistics) {
-      write_statistics_text(report_out, reports);
-      const Summary s = summarize(reports);
-      if (!quiet && s.fixable) report_out << "[*] fixable with `asset-lint --fix`\n";
-    } else if (format == "json") write_json(report_out, reports);
-    else if (format == "concise") write_concise(report_out, reports);
-    else if (format == "github") write_github(report_out, reports);
-    else if (format == "sarif") {
-      std::error_code ec;
-      write_sarif(report_out, reports, SarifOptions{std::filesystem::current_path(ec).string()});
-    } else if (format == "junit") {
-      write_junit(report_out, reports,
-                  [&](const FileReport& r) { return rules_run_on(resolver.for_file(r.path), r.path); });
-    } else write_text(report_out, reports, TextOptions{use_color, !quiet});
-    report_out.flush();
-  };
-  // --exit-zero turns "findings remain" into success; errors stay errors.
-  auto finish = [&](int code) {
-    if (!output_file.empty() && !report_file) {
-      err << fmt::format("asset-lint: error: cannot write '{}'\n", output_file);
-      return kExitError;
-    }
-    return exit_zero && code == kExitFindings ? kExitClean : code;
-  };
-  fix::FixCommandOptions fix_options;
-  fix_options.diff = diff;
-  fix_options.unsafe = unsafe_fixes;
-  fix_options.jobs = jobs;
-
-  PathExpansion expansion = expand_paths(paths);
+// Checks or fixes the files the options name, writing the report to `report_out`.
+int run_files(const Options& options, std::ostream& out, std::ostream& err, std::ostream& report_out,
+              bool out_is_terminal) {
+  config::SettingsResolver resolver(overrides_from(options), options.config_path.empty()
+                                                                 ? std::nullopt
+                                                                 : std::optional(options.config_path));
+  const commands::WriteReport write_report =
+      report_writer(options, use_color(options, out_is_terminal), resolver, report_out);
+  const PathExpansion expansion = expand_paths(options.paths);
   if (auto error = resolver.prepare(expansion.files)) {
     err << "asset-lint: error: " << error->to_string() << "\n";
     return kExitError;
   }
-  if (fix || diff)
-    return finish(fix::run_fix_command(paths, resolver.as_function(), fix_options, out, err, write_report));
-
-  bool io_error = false;
-  for (const auto& message : expansion.errors) {
-    err << "asset-lint: error: " << message << "\n";
-    io_error = true;
+  if (options.fix || options.diff) {
+    commands::FixCommandOptions fix_options;
+    fix_options.diff = options.diff;
+    fix_options.unsafe = options.unsafe_fixes;
+    fix_options.jobs = options.jobs;
+    return commands::run_fix_command(options.paths, resolver.as_function(), fix_options, out, err, write_report);
   }
-  std::vector<FileReport> reports = lint_files(expansion.files, resolver.as_function(), jobs);
-  drop_repeated_findings(reports);
-  std::erase_if(reports, [&](const FileReport& report) {
-    if (!report.error) return false;
-    err << "asset-lint: error: " << *report.error << "\n";
-    io_error = true;
-    return true;
-  });
+  return commands::run_check(expansion, resolver.as_function(), commands::CheckOptions{options.jobs}, err,
+                             write_report);
+}
 
-  write_report(reports);
-  if (io_error) return finish(kExitError);
-  return finish(summarize(reports).total() == 0 ? kExitClean : kExitFindings);
+int run_check_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+                      bool out_is_terminal) {
+  ParsedOptions parsed = parse_options(args, out, err);
+  if (!parsed.options) return parsed.exit_code;
+  const Options& options = *parsed.options;
+  if (options.version) {
+    out << "asset-lint " << ASSET_LINT_VERSION << "\n";
+    return kExitClean;
+  }
+  if (options.list_rules) {
+    list_rules(out);
+    return kExitClean;
+  }
+  if (!validate_options(options, err)) return kExitError;
+  std::ofstream report_file;
+  if (!options.output_file.empty()) {
+    report_file.open(options.output_file, std::ios::binary | std::ios::trunc);
+    if (!report_file) {
+      err << fmt::format("asset-lint: error: cannot write '{}'\n", options.output_file);
+      return kExitError;
+    }
+  }
+  const int code =
+      run_files(options, out, err, options.output_file.empty() ? out : report_file, out_is_terminal);
+  if (!options.output_file.empty() && !report_file) {
+    err << fmt::format("asset-lint: error: cannot write '{}'\n", options.output_file);
+    return kExitError;
+  }
+  // --exit-zero turns "findings remain" into success; errors stay errors.
+  return options.exit_zero && code == kExitFindings ? kExitClean : code;
+}
+
+}  // namespace
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
+  if (!args.empty() && args.front() == "rule") return run_rule_command(args, out, err);
+  if (!args.empty() && args.front() == "check")
+    return run_check_command({args.begin() + 1, args.end()}, out, err, out_is_terminal);
+  return run_check_command(args, out, err, out_is_terminal);
 }
 
 }  // namespace assetlint::cli

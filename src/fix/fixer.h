@@ -11,7 +11,7 @@
 
 #include "engine/diagnostic.h"
 #include "engine/file_system.h"
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "engine/settings.h"
 
 namespace assetlint::fix {

@@ -4,7 +4,7 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 namespace assetlint {
 

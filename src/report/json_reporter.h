@@ -2,7 +2,7 @@
 #include <ostream>
 #include <vector>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 namespace assetlint {
 

@@ -4,8 +4,9 @@
 
 #include <map>
 
-#include "engine/suppressions.h"
+#include "formats/suppressions.h"
 #include "report/report_util.h"
+#include "pipeline/suppressions.h"
 #include "rules/registry.h"
 
 namespace assetlint {

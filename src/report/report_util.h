@@ -2,7 +2,7 @@
 // Small helpers the report writers share.
 #include <string>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 namespace assetlint {
 

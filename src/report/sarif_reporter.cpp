@@ -5,7 +5,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "cli/rule_docs.h"
+#include "report/rule_docs.h"
 #include "report/report_util.h"
 #include "report/summary.h"
 #include "rules/registry.h"

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 namespace assetlint {
 

@@ -1,6 +1,6 @@
 #pragma once
-// Inline suppressions and per-file ignores, applied to a file's findings after the
-// rules ran.
+// Inline suppression comments, found in each format's own comment syntax (applied to
+// findings by pipeline/suppressions.h).
 //
 //   URDF:  <!-- asset-lint: ignore[rule-id, other-*] -->   before an element: the element,
 //                                                          through its end tag
@@ -9,19 +9,11 @@
 //                                                          trailing ( … ) metadata block)
 //   both:  asset-lint: ignore-file[rule-id]                in a comment before the first
 //                                                          element or prim: the whole file
-//
-// A suppression that suppresses nothing in the run (for rules that ran), names no known
-// rule, or is malformed is reported as `unused-suppression`.
 #include <cstddef>
-#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "engine/diagnostic.h"
-#include "engine/settings.h"
-#include "model/source.h"
 
 namespace assetlint {
 
@@ -46,19 +38,5 @@ std::vector<SuppressionComment> find_suppressions(std::string_view text, Comment
 
 // The syntax of a source by its path: .urdf (and .xml) is XML, anything else a USD layer.
 CommentSyntax comment_syntax_for(std::string_view path);
-
-// Whether `path` (as the checked file was named) matches a per-file-ignores glob of
-// `settings` for `rule_id`. Globs are matched against the path relative to the directory
-// of the configuration file; `**` spans directories, `*` and `?` stay within one.
-bool per_file_ignored(const Settings& settings, std::string_view path, std::string_view rule_id);
-
-// Path glob: `**` matches any number of whole directories (or, at the end, anything),
-// `*` and `?` do not cross '/'. A pattern without '/' matches the file name alone as well.
-bool path_glob_match(std::string_view pattern, std::string_view path);
-
-// Drops the suppressed findings of `diagnostics` (located in `sources`), then adds the
-// unused-suppression findings when that rule is enabled.
-void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& sources,
-                        std::vector<Diagnostic>& diagnostics, const Settings& settings);
 
 }  // namespace assetlint

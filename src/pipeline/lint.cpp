@@ -1,4 +1,4 @@
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 
 #include <fmt/format.h>
 
@@ -11,19 +11,14 @@
 
 #include "config/drive_overrides.h"
 #include "engine/rule.h"
-#include "engine/suppressions.h"
+#include "formats/file_kind.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
+#include "pipeline/suppressions.h"
 #include "rules/registry.h"
 
 namespace assetlint {
 namespace {
-
-std::string extension_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 // The deepest named tree that holds the file; empty (its own directory) when none does.
 std::string tree_of(const std::string& path, const std::vector<std::string>& trees) {
@@ -64,13 +59,6 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 }
 
 }  // namespace
-
-FileKind file_kind(const std::string& path) {
-  const std::string ext = extension_of(path);
-  if (ext == ".urdf") return FileKind::Urdf;
-  if (ext == ".usda") return FileKind::Usda;
-  return FileKind::Unsupported;
-}
 
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
   FileReport report;
@@ -142,37 +130,6 @@ void drop_repeated_findings(std::vector<FileReport>& reports) {
       return !seen.emplace(canonical, d.span.offset, d.rule, d.message).second;
     });
   }
-}
-
-PathExpansion expand_paths(const std::vector<std::string>& paths) {
-  namespace fs = std::filesystem;
-  PathExpansion out;
-  for (const auto& path : paths) {
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) {
-      out.errors.push_back(fmt::format("no such file or directory: '{}'", path));
-      continue;
-    }
-    if (!fs::is_directory(status)) {
-      out.files.push_back(path);
-      continue;
-    }
-    std::vector<std::string> found;
-    fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
-    for (; !ec && it != end; it.increment(ec)) {
-      const auto name = it->path().filename().string();
-      if (it->is_directory(ec)) {
-        if (name.starts_with(".")) it.disable_recursion_pending();
-        continue;
-      }
-      if (it->is_regular_file(ec) && file_kind(it->path().string()) != FileKind::Unsupported)
-        found.push_back(it->path().string());
-    }
-    std::sort(found.begin(), found.end());
-    out.files.insert(out.files.end(), found.begin(), found.end());
-  }
-  return out;
 }
 
 }  // namespace assetlint

@@ -1,6 +1,6 @@
 #pragma once
-// Runs the readers and the rules over files: the one entry point the CLI, the fixer
-// and the tests share.
+// Runs the readers and the rules over files: the one entry point the commands, the
+// fixer and the tests share.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -23,9 +23,6 @@ struct FileReport {
   const SourceFile& source(FileId id) const { return *sources.at(id); }
 };
 
-enum class FileKind { Urdf, Usda, Unsupported };
-FileKind file_kind(const std::string& path);
-
 // Reads and lints one file (through `files`, the disk by default).
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files = disk());
 // Lints text as if it were the file `path` (its extension picks the reader).
@@ -42,13 +39,5 @@ std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const 
 // layer that sublayers it) yields the same finding once per file that composes it:
 // keeps the first, drops the repeats (same layer, position, rule and message).
 void drop_repeated_findings(std::vector<FileReport>& reports);
-
-// Files to check for the given paths: files as given, directories searched
-// recursively for *.urdf and *.usda (hidden directories skipped), sorted.
-struct PathExpansion {
-  std::vector<std::string> files;
-  std::vector<std::string> errors;  // paths that do not exist
-};
-PathExpansion expand_paths(const std::vector<std::string>& paths);
 
 }  // namespace assetlint

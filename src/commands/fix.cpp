@@ -1,4 +1,4 @@
-#include "fix/command.h"
+#include "commands/fix.h"
 
 #include <fmt/format.h>
 
@@ -8,21 +8,17 @@
 #include <set>
 #include <thread>
 
+#include "commands/exit_status.h"
 #include "fix/diff.h"
 #include "fix/fixer.h"
 #include "fix/writer.h"
-#include "report/summary.h"
 
-namespace assetlint::fix {
+namespace assetlint::commands {
 namespace {
-
-constexpr int kExitClean = 0;
-constexpr int kExitFindings = 1;
-constexpr int kExitError = 2;
 
 struct Target {
   std::string path;
-  EditScope scope;
+  fix::EditScope scope;
 };
 
 std::string problems(std::size_t n) { return fmt::format("{} problem{}", n, n == 1 ? "" : "s"); }
@@ -38,7 +34,7 @@ std::string diff_label(const char* prefix, const std::string& path) {
 
 int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& settings,
                     const FixCommandOptions& options, std::ostream& out, std::ostream& err,
-                    const std::function<void(const std::vector<FileReport>&)>& write_report) {
+                    const WriteReport& write_report) {
   bool failed = false;
   // Each file may be edited within the tree it was found in: a directory argument's
   // tree, or a file argument's own directory.
@@ -55,19 +51,19 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
       std::error_code ec;
       const auto canonical = std::filesystem::weakly_canonical(file, ec);
       if (!seen.insert(ec ? file : canonical.string()).second) continue;
-      EditScope scope = file == argument ? default_scope(file) : tree_scope(argument);
+      fix::EditScope scope = file == argument ? fix::default_scope(file) : fix::tree_scope(argument);
       targets.push_back({std::move(file), std::move(scope)});
     }
   }
 
-  std::vector<FixResult> results(targets.size());
+  std::vector<fix::FixResult> results(targets.size());
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t i = next++; i < targets.size(); i = next++) {
-      FixOptions fix_options;
+      fix::FixOptions fix_options;
       fix_options.unsafe = options.unsafe;
       fix_options.scope = targets[i].scope;
-      results[i] = fix_file(targets[i].path, settings(targets[i].path), fix_options);
+      results[i] = fix::fix_file(targets[i].path, settings(targets[i].path), fix_options);
     }
   };
   const unsigned jobs = std::max(1u, std::min<unsigned>(options.jobs, static_cast<unsigned>(targets.size())));
@@ -78,7 +74,7 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
 
   bool any_diff = false;
   std::vector<FileReport> remaining;
-  for (FixResult& result : results) {
+  for (fix::FixResult& result : results) {
     for (const auto& message : result.internal_errors) err << "asset-lint: internal error: " << message << "\n";
     for (const auto& message : result.notes) err << "asset-lint: note: " << message << "\n";
     if (result.error) {
@@ -88,16 +84,16 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
       continue;
     }
     if (options.diff) {
-      for (const FixedFile& file : result.files) {
-        out << unified_diff(file.original, file.fixed, diff_label("a/", file.path), diff_label("b/", file.path));
+      for (const fix::FixedFile& file : result.files) {
+        out << fix::unified_diff(file.original, file.fixed, diff_label("a/", file.path), diff_label("b/", file.path));
         err << fmt::format("asset-lint: would fix {} in {}\n", problems(file.fixes), file.path);
         any_diff = true;
       }
       continue;
     }
     bool write_failed = false;
-    for (const FixedFile& file : result.files) {
-      if (auto message = write_fixed_file(file)) {
+    for (const fix::FixedFile& file : result.files) {
+      if (auto message = fix::write_fixed_file(file)) {
         err << "asset-lint: error: " << *message << "\n";
         write_failed = true;
         continue;
@@ -117,7 +113,9 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
   std::erase_if(remaining, [](const FileReport& r) { return r.error.has_value(); });
   write_report(remaining);
   if (failed) return kExitError;
-  return summarize(remaining).total() == 0 ? kExitClean : kExitFindings;
+  return std::all_of(remaining.begin(), remaining.end(), [](const FileReport& r) { return r.diagnostics.empty(); })
+             ? kExitClean
+             : kExitFindings;
 }
 
-}  // namespace assetlint::fix
+}  // namespace assetlint::commands

@@ -1,15 +1,14 @@
 #pragma once
 // `asset-lint --fix` / `--diff`: fixes every file the paths name, writes (or diffs)
-// the results, reports what remains. Called by the CLI after option parsing.
-#include <functional>
+// the results, reports what remains. Called by the command line after option parsing.
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include "engine/linter.h"
-#include "engine/settings.h"
+#include "commands/check.h"
+#include "pipeline/lint.h"
 
-namespace assetlint::fix {
+namespace assetlint::commands {
 
 struct FixCommandOptions {
   bool diff = false;    // print a unified diff instead of writing
@@ -24,6 +23,6 @@ struct FixCommandOptions {
 // read/write errors or fixes that do not converge. Per-file progress and errors go to `err`.
 int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& settings,
                     const FixCommandOptions& options, std::ostream& out, std::ostream& err,
-                    const std::function<void(const std::vector<FileReport>&)>& write_report);
+                    const WriteReport& write_report);
 
-}  // namespace assetlint::fix
+}  // namespace assetlint::commands

@@ -1,0 +1,114 @@
+#include "cli/options.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <thread>
+
+#include "rules/registry.h"
+
+namespace assetlint::cli {
+namespace {
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("paths", o.paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
+  app.add_option("--select", o.select, "Only these rules (comma list, globs such as 'mimic-*')")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  app.add_option("--ignore", o.ignore, "Skip these rules (comma list, globs)")->delimiter(',')->allow_extra_args(false);
+  app.add_option("--output-format", o.format, "Output format: text, concise, json, sarif, github or junit")
+      ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "junit"}));
+  app.add_option("--output-file", o.output_file, "Write the report to this file instead of standard output");
+  app.add_flag("--statistics", o.statistics, "Print the number of findings per rule instead of the findings");
+  app.add_flag("--exit-zero", o.exit_zero, "Exit 0 even when findings remain (still 2 on errors)");
+  app.add_flag("-q,--quiet", o.quiet, "Text output: only the findings, no summary line");
+  app.add_option("--color", o.color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_option("-j,--jobs", o.jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
+  app.add_option("--config", o.config_path,
+                 "Use this asset-lint.toml for every file (default: the nearest one above each file)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--timesteps-per-second", o.timesteps_per_second,
+                 "Simulation rate, when the asset's stage authors none")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--position-iterations", o.position_iterations,
+                 "Solver position iterations, when the asset authors none")
+      ->check(CLI::Range(1u, 255u));
+  app.add_flag("--allow-outside-root", o.allow_outside_root,
+               "Let USD composition read layers outside the checked tree (the directory named, or the working "
+               "directory)");
+  app.add_flag("--fix", o.fix, "Apply the safe fixes in place, then report what remains");
+  app.add_flag("--unsafe-fixes", o.unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
+  app.add_flag("--diff", o.diff, "Print a unified diff of what --fix would change; write nothing");
+  app.add_flag("--list-rules", o.list_rules, "List every rule and exit");
+  app.add_flag("--version", o.version, "Print the version and exit");
+  app.footer(
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
+      "Exit status: 0 nothing reported, 1 findings remain, 2 usage, configuration or I/O error.\n"
+      "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
+}
+
+// Each --select/--ignore pattern must name at least one rule: a typo would
+// otherwise silently select nothing.
+bool validate_patterns(const std::vector<std::string>& patterns, const char* flag, std::ostream& err) {
+  for (const auto& pattern : patterns) {
+    bool matched = false;
+    for (const RuleInfo* rule : rules::catalog()) matched = matched || glob_match(pattern, rule->id);
+    if (!matched) {
+      err << fmt::format("asset-lint: error: {} '{}' matches no rule; `asset-lint --list-rules` lists them\n", flag,
+                         pattern);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"asset-lint: checks robot assets (URDF, USDA) against PhysX joint-tuning guidance", "asset-lint"};
+  Options options;
+  options.jobs = std::max(1u, std::thread::hardware_concurrency());
+  add_options(app, options);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return {std::nullopt, 0};
+  } catch (const CLI::ParseError& e) {
+    err << "asset-lint: error: " << e.what() << "\n";
+    return {std::nullopt, 2};
+  }
+  options.select_given = app.count("--select") > 0;
+  options.ignore_given = app.count("--ignore") > 0;
+  return {std::move(options), 0};
+}
+
+bool validate_options(const Options& o, std::ostream& err) {
+  if (o.paths.empty()) {
+    err << "asset-lint: error: no files to check; usage: asset-lint [check] PATH...\n";
+    return false;
+  }
+  if (!validate_patterns(o.select, "--select", err) || !validate_patterns(o.ignore, "--ignore", err)) return false;
+  if (o.statistics && o.format != "text" && o.format != "concise" && o.format != "json") {
+    err << "asset-lint: error: --statistics works with --output-format text, concise or json\n";
+    return false;
+  }
+  return true;
+}
+
+config::CommandLineOverrides overrides_from(const Options& o) {
+  config::CommandLineOverrides overrides;
+  if (o.select_given) overrides.select = o.select;
+  if (o.ignore_given) overrides.ignore = o.ignore;
+  overrides.timesteps_per_second = o.timesteps_per_second;
+  if (o.position_iterations) overrides.position_iterations = static_cast<double>(*o.position_iterations);
+  overrides.allow_outside_root = o.allow_outside_root;
+  overrides.trees.push_back(std::filesystem::current_path().string());
+  for (const auto& path : o.paths)
+    if (std::filesystem::is_directory(path)) overrides.trees.push_back(path);
+  return overrides;
+}
+
+}  // namespace assetlint::cli

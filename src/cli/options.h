@@ -1,0 +1,43 @@
+#pragma once
+// The command line of `asset-lint [check]`: every option, parsed and checked.
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "config/resolver.h"
+
+namespace assetlint::cli {
+
+struct Options {
+  std::vector<std::string> paths;
+  std::vector<std::string> select, ignore;
+  bool select_given = false, ignore_given = false;
+  std::string format = "text";
+  std::string color = "auto";
+  bool list_rules = false, version = false;
+  bool fix = false, unsafe_fixes = false, diff = false;
+  bool statistics = false, exit_zero = false, quiet = false;
+  std::string output_file;
+  std::string config_path;
+  bool allow_outside_root = false;
+  std::optional<double> timesteps_per_second;
+  std::optional<unsigned> position_iterations;
+  unsigned jobs = 1;
+};
+
+// Parses `args` (after the command word). On --help prints the help to `out`; on a
+// usage error names it on `err`. Either way returns the exit code instead of options.
+struct ParsedOptions {
+  std::optional<Options> options;
+  int exit_code = 0;
+};
+ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+// Combinations of options that parse but make no sense together; names the first on `err`.
+bool validate_options(const Options& options, std::ostream& err);
+
+// The part of the options that overrides every configuration file.
+config::CommandLineOverrides overrides_from(const Options& options);
+
+}  // namespace assetlint::cli

@@ -1,0 +1,143 @@
+// Real PhysX (5.6.1 compiled to WASM, npm physx-js-webidl 2.7.3, run with Node) as the
+// reference for the drive model: tests/physx_reference/run.mjs builds one link on a revolute
+// joint per case, measures free motion and the torque that holds it at a hard stop, and this
+// file checks those measurements. Skipped with a message when `node` or the package is absent
+// (scripts/bootstrap.sh installs the package into tools/node_modules).
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "test_support.h"
+
+using assetlint::test::read_file;
+using assetlint::test::source_dir;
+
+namespace {
+
+std::filesystem::path find_on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return {};
+  std::stringstream dirs(path);
+  for (std::string dir; std::getline(dirs, dir, ':');) {
+    const auto candidate = std::filesystem::path(dir.empty() ? "." : dir) / program;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(candidate, ec) &&
+        (std::filesystem::status(candidate, ec).permissions() & std::filesystem::perms::owner_exec) !=
+            std::filesystem::perms::none)
+      return candidate;
+  }
+  return {};
+}
+
+std::string shell_quote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+struct Measurements {
+  nlohmann::json json;  // run.mjs's output; null when skipped
+  std::string skipped;  // why, when skipped
+};
+
+// Runs the measuring script once per test process.
+const Measurements& measurements() {
+  static const Measurements result = [] {
+    Measurements m;
+    const auto node = find_on_path("node");
+    const auto package = source_dir() / "tools" / "node_modules" / "physx-js-webidl";
+    if (node.empty()) {
+      m.skipped = "node not found on PATH";
+      return m;
+    }
+    if (!std::filesystem::exists(package / "physx-js-webidl.wasm")) {
+      m.skipped = "physx-js-webidl not installed in tools/node_modules (scripts/bootstrap.sh installs it)";
+      return m;
+    }
+    assetlint::test::TempDir dir;
+    const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
+    const std::string command = "timeout 120 " + shell_quote(node.string()) + " " +
+                                shell_quote((source_dir() / "tests" / "physx_reference" / "run.mjs").string()) +
+                                " " + shell_quote(package.string()) + " >" + shell_quote(out.string()) + " 2>" +
+                                shell_quote(err.string()) + " </dev/null";
+    const int status = std::system(command.c_str());
+    if (status != 0) {
+      // The tools are there, so a failure is a real one, not a reason to skip.
+      FAIL("run.mjs failed (status " << status << "): " << read_file(err));
+    }
+    m.json = nlohmann::json::parse(read_file(out));
+    return m;
+  }();
+  return result;
+}
+
+bool skip_without_physx() {
+  const auto& m = measurements();
+  if (m.skipped.empty()) return false;
+  WARN("PhysX reference skipped: " << m.skipped);
+  return true;
+}
+
+const nlohmann::json& find_case(const std::string& name) {
+  for (const auto& c : measurements().json["cases"])
+    if (c["name"] == name) return c;
+  FAIL("no case named '" << name << "' in run.mjs's output");
+  throw std::logic_error("unreachable");
+}
+
+}  // namespace
+
+TEST_CASE("physx reference: PhysX 5.6.1 reproduces PHYSICS.md's measured holds", "[physx]") {
+  if (skip_without_physx()) return;
+  CHECK(measurements().json["engine"] == "PhysX 5.6.1");
+  CHECK(measurements().json["package"] == "physx-js-webidl 2.7.3");
+  // PHYSICS.md §2 "Measured in real PhysX", N·m, at the digits printed there (k·Δ = 497.6 for
+  // k = 5700: Δ = 0.0873 rad).
+  struct Row {
+    const char* drive;
+    double tgs;
+    double pgs;
+    double half_digit;  // half a unit of the last printed digit
+  };
+  const Row rows[] = {
+      {"k5700 d0.277", 39.05, 1.18, 0.005},
+      {"k5700 d0", 65.41, 1.19, 0.0051},  // measured 65.415
+      {"k5700 d2.77", 8.44, 1.06, 0.005},
+      {"k5700 d0.277 N4", 0.280, 0.091, 0.0005},
+      {"k5700 d0.277 armature1e-5", 125.65, 4.66, 0.005},
+      {"k275 d0.061", 9.80, 1.11, 0.005},
+      {"k5700 d0.277 I1.4e-4", 387.94, 46.68, 0.005},
+      {"k275 d0.061 I0.01", 24.00, 24.01, 0.005},
+      {"k5700 d0.277 maxForce24 forces", 24.00, 1.18, 0.005},
+  };
+  for (const auto& row : rows) {
+    INFO(row.drive);
+    CHECK(find_case(std::string("TGS ") + row.drive)["hold"]["torque"].get<double>() ==
+          Approx(row.tgs).margin(row.half_digit));
+    CHECK(find_case(std::string("PGS ") + row.drive)["hold"]["torque"].get<double>() ==
+          Approx(row.pgs).margin(row.half_digit));
+  }
+}
+
+TEST_CASE("physx reference: the stops are hard and the holds steady", "[physx]") {
+  if (skip_without_physx()) return;
+  const auto& cases = measurements().json["cases"];
+  CHECK(cases.size() >= 30);
+  for (const auto& c : cases) {
+    INFO(c["name"].get<std::string>());
+    const auto& hold = c["hold"];
+    CHECK(hold["contacts"].get<int>() > 0);
+    // The contact keeps the joint at the stop (angle 0) to within 1e-6 rad of Δ = 0.0873 rad ...
+    CHECK(std::abs(hold["position"].get<double>()) < 1e-6);
+    // ... and so does a joint limit in its place (the script's limit run).
+    CHECK(std::abs(c["limit_stop"]["max_position"].get<double>()) < 2e-6);
+    // The hold is the same from one frame to the next (to float32 noise).
+    CHECK(hold["torque"].get<double>() == Approx(hold["previous_frame_torque"].get<double>()).epsilon(1e-5));
+  }
+}
