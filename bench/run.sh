@@ -3,7 +3,7 @@
 #   bench/run.sh [BUILD_DIR] [CORPUS_DIR]
 # Needs: hyperfine, GNU time (/usr/bin/time, peak memory); check_urdf (liburdfdom-tools)
 # for the comparisons; valgrind for instruction counts (optional, BENCH_CALLGRIND=0 skips).
-# Generated assets go to $BENCH_WORK (default: a temporary directory, removed at the end).
+# BENCH_SIZES and BENCH_CALLGRIND_SIZES choose the joint counts. Generated assets go to $BENCH_WORK (default: a temporary directory, removed at the end).
 # Everything runs under `nice`: the machine may be shared.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -31,7 +31,9 @@ fmt() { awk -v a="$1" 'BEGIN { printf "%.4f", a }'; }
 hf() {  # hf NAME RUNS CMD
   local name=$1 runs=$2
   shift 2
-  $N hyperfine --style none --warmup 1 --runs "$runs" -i --export-json "$work/$name.json" -n "$name" "$*" >/dev/null
+  local warmup=1
+  [ "$runs" -le 2 ] && warmup=0
+  $N hyperfine --style none --warmup "$warmup" --runs "$runs" -i --export-json "$work/$name.json" -n "$name" "$*" >/dev/null
 }
 
 {
@@ -49,7 +51,7 @@ hf() {  # hf NAME RUNS CMD
 } > "$out"
 
 # --- 1. Scaling: chains, wide trees, mimic chains from 10 to 100 000 joints ----------------
-sizes=(10 100 1000 10000 100000)
+read -r -a sizes <<< "${BENCH_SIZES:-10 100 1000 10000 100000}"
 {
   echo "## Scaling (URDF, all rules, one process)"
   echo
@@ -64,7 +66,7 @@ for kind in urdf-chain urdf-tree urdf-mimic; do
   for n in "${sizes[@]}"; do
     f="$work/$kind-$n.urdf"
     "$gen" "$kind" "$n" "$f"
-    runs=10; [ "$n" -ge 100000 ] && runs=3
+    runs=10; [ "$n" -ge 10000 ] && runs=3; [ "$n" -ge 100000 ] && runs=1
     hf "$kind-$n" "$runs" "$lint $f"
     t=$(median_of "$kind-$n")
     m=$(peak_kb "$lint" "$f")
@@ -89,8 +91,9 @@ if [ "${BENCH_CALLGRIND:-1}" = "1" ] && command -v valgrind >/dev/null; then
     echo "|---:|---:|---:|"
   } >> "$out"
   prev=""
-  for n in 1000 10000 100000; do
+  for n in ${BENCH_CALLGRIND_SIZES:-1000 10000 100000}; do
     f="$work/urdf-mimic-$n.urdf"
+    [ -f "$f" ] || "$gen" urdf-mimic "$n" "$f"
     ir=$($N valgrind --tool=callgrind --callgrind-out-file=/dev/null "$lint" "$f" 2>&1 >/dev/null |
          sed -n 's/.*Collected : *\([0-9]*\).*/\1/p' | tail -1)
     g=""; [ -n "$prev" ] && g=$(awk -v a="$ir" -v b="$prev" 'BEGIN { printf "%.2f", a / b / 10 }')
@@ -112,8 +115,10 @@ if [ "$have_check_urdf" = 1 ]; then
   for f in "$work/urdf-chain-50000.urdf" $largest; do
     [ -f "$f" ] || "$gen" urdf-chain 50000 "$f"
     name=$(basename "$f")
-    hf "al-$name" 10 "$lint $f"
-    hf "cu-$name" 10 "check_urdf $f"
+    # check_urdf prints the whole tree and takes minutes on the 50 000-joint chain: one run.
+    runs=10; [ "$(stat -c %s "$f")" -gt 10000000 ] && runs=1
+    hf "al-$name" "$runs" "$lint $f"
+    hf "cu-$name" "$runs" "check_urdf $f"
     a=$(median_of "al-$name") c=$(median_of "cu-$name")
     echo "| $name ($(stat -c %s "$f") bytes) | $(fmt "$a") | $(fmt "$c") | $(ratio "$a" "$c") |" >> "$out"
   done

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/urdf/urdfdom_check.h"
 #include "memory_file_system.h"

@@ -2,7 +2,7 @@
 #include <cstdint>
 #include <string>
 
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "memory_file_system.h"
 
 using namespace assetlint;

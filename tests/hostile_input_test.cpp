@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "engine/file_system.h"
-#include "engine/linter.h"
+#include "pipeline/lint.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -59,11 +59,11 @@ TEST_CASE("hostile: a file over the size limit is refused before it is read", "[
     ::close(fd);
   }
   const DiskFileSystem files;
-  CHECK(read_error(files, huge.string()) == "is 1024.0 MiB, over the 512.0 MiB limit (--max-file-size)");
+  CHECK(read_error(files, huge.string()) == "is 1024 MiB, over the 512 MiB limit (--max-file-size)");
   // A configured limit applies the same way.
   test::write_file(dir.path() / "small.urdf", std::string(3 << 20, '<'));
   const DiskFileSystem strict(ReadLimits{1 << 20});
-  CHECK(read_error(strict, (dir.path() / "small.urdf").string()) == "is 3.0 MiB, over the 1.0 MiB limit (--max-file-size)");
+  CHECK(read_error(strict, (dir.path() / "small.urdf").string()) == "is 3 MiB, over the 1 MiB limit (--max-file-size)");
   std::string error;
   CHECK(files.read((dir.path() / "small.urdf").string(), error)->size() == (3u << 20));
 }
@@ -133,4 +133,28 @@ TEST_CASE("hostile: a layer cycle and layers that are devices or FIFOs are notes
   CHECK(r.out.find("layer 'pipe.usda' cannot be read (is a FIFO, not a regular file); skipped") != std::string::npos);
   CHECK(r.out.find("layer '/dev/zero' cannot be read (is a character device, not a regular file); skipped") !=
         std::string::npos);
+}
+
+TEST_CASE("hostile: a symlink loop in a checked directory does not stop the walk", "[hostile]") {
+  test::TempDir dir;
+  fs::create_directories(dir.path() / "robots");
+  fs::create_symlink("loop", dir.path() / "robots" / "loop");           // links to itself
+  fs::create_symlink(".", dir.path() / "robots" / "again");             // a directory cycle
+  fs::create_symlink("a.urdf", dir.path() / "robots" / "a_loop.urdf");  // dangling
+  test::write_file(dir.path() / "robots" / "z.urdf", kValidUrdf);
+  const auto r = test::run_cli({"robots"}, dir.path());
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out == "No problems found in 1 file.\n");
+}
+
+TEST_CASE("hostile: --max-file-size names the file and the others are still checked", "[hostile]") {
+  test::TempDir dir;
+  test::write_file(dir.path() / "big.urdf", std::string((2 << 20) + 1, '<'));
+  test::write_file(dir.path() / "ok.urdf", kValidUrdf);
+  const auto r = test::run_cli({"--max-file-size", "2", "big.urdf", "ok.urdf"}, dir.path());
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("is 2.0 MiB (2097153 bytes), over the 2 MiB limit (--max-file-size)") != std::string::npos);
+  CHECK(r.out.find("1 file") != std::string::npos);
 }

@@ -12,6 +12,7 @@
 #include "commands/exit_status.h"
 #include "commands/fix.h"
 #include "config/resolver.h"
+#include "engine/file_system.h"
 #include "pipeline/discovery.h"
 
 namespace assetlint::cli {
@@ -72,6 +73,7 @@ int run_check_command(const std::vector<std::string>& args, std::ostream& out, s
     return kExitClean;
   }
   if (!validate_options(options, err)) return kExitError;
+  set_disk_limits(ReadLimits{options.max_file_mib << 20});
   std::ofstream report_file;
   if (!options.output_file.empty()) {
     report_file.open(options.output_file, std::ios::binary | std::ios::trunc);

@@ -1,11 +1,13 @@
 #pragma once
 // The command line of `asset-lint [check]`: every option, parsed and checked.
+#include <cstdint>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "config/resolver.h"
+#include "engine/file_system.h"
 
 namespace assetlint::cli {
 
@@ -21,6 +23,7 @@ struct Options {
   std::string output_file;
   std::string config_path;
   bool allow_outside_root = false;
+  std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read
   std::optional<double> timesteps_per_second;
   std::optional<unsigned> position_iterations;
   unsigned jobs = 1;

@@ -19,8 +19,11 @@ struct Descriptor {
   }
 };
 
+// "512 MiB", "2.0 MiB (2097153 bytes)", "300 bytes".
 std::string describe_size(std::uint64_t bytes) {
-  if (bytes >= (1ull << 20)) return fmt::format("{:.1f} MiB", static_cast<double>(bytes) / (1 << 20));
+  constexpr std::uint64_t kMiB = 1ull << 20;
+  if (bytes >= kMiB && bytes % kMiB == 0) return fmt::format("{} MiB", bytes / kMiB);
+  if (bytes >= kMiB) return fmt::format("{:.1f} MiB ({} bytes)", static_cast<double>(bytes) / kMiB, bytes);
   return fmt::format("{} bytes", bytes);
 }
 

@@ -27,11 +27,14 @@ PathExpansion expand_paths(const std::vector<std::string>& paths) {
     fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
     for (; !ec && it != end; it.increment(ec)) {
       const auto name = it->path().filename().string();
-      if (it->is_directory(ec)) {
+      // Its own error code: an entry that cannot be stat'ed (a symlink loop, a dangling
+      // link) is skipped, not the end of the walk.
+      std::error_code entry_ec;
+      if (it->is_directory(entry_ec)) {
         if (name.starts_with(".")) it.disable_recursion_pending();
         continue;
       }
-      if (it->is_regular_file(ec) && file_kind(it->path().string()) != FileKind::Unsupported)
+      if (it->is_regular_file(entry_ec) && file_kind(it->path().string()) != FileKind::Unsupported)
         found.push_back(it->path().string());
     }
     std::sort(found.begin(), found.end());
