@@ -117,13 +117,13 @@ TEST_CASE("cli: --diff prints a unified diff, writes nothing, exits 1", "[fix][c
   CHECK(read_file(file) == original);
 }
 
-TEST_CASE("cli: --diff exits 0 with no output when there is nothing to change", "[fix][cli]") {
+TEST_CASE("cli: --diff exits 0 with no diff when there is nothing to change, and says so", "[fix][cli]") {
   TempDir dir;
   copy_case(dir.path(), "units-angle-degrees", "guide_upper_47.urdf", "robot.urdf");
   auto r = run_cli({"--diff", "robot.urdf"}, dir.path());  // the only fix is unsafe
   CHECK(r.exit_code == 0);
   CHECK(r.out.empty());
-  CHECK(r.err.empty());
+  CHECK(r.err == "asset-lint: no fix applies; nothing to change\n");
   auto clean = run_cli({"--diff", "fixtures/robotiq_2f85/robotiq_2f85.urdf"});
   CHECK(clean.exit_code == 0);
   CHECK(clean.out.empty());

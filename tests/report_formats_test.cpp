@@ -2,11 +2,13 @@
 // --exit-zero, --quiet and --output-file, through the real binary.
 // Golden files live in fixtures/report/; ASSET_LINT_UPDATE_EXPECTED=1 rewrites them.
 #include <catch2/catch.hpp>
+
 #include <nlohmann/json.hpp>
 #include <tinyxml2.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 
 #include "report/github_reporter.h"
 #include "report/junit_reporter.h"
@@ -233,7 +235,7 @@ TEST_CASE("report: github workflow commands and their escaping", "[report]") {
   CHECK(notes.out.rfind("::notice file=joints.usda,line=40,col=15,", 0) == 0);
 }
 
-TEST_CASE("report: JUnit XML parses back, one suite per file, one case per rule", "[report]") {
+TEST_CASE("report: JUnit XML parses back, one case per finding with file and line, one per clean rule", "[report]") {
   auto r = run_cli(with_inputs({"--output-format", "junit"}), report_dir());
   REQUIRE(r.exit_code == 1);
   tinyxml2::XMLDocument doc;
@@ -241,38 +243,62 @@ TEST_CASE("report: JUnit XML parses back, one suite per file, one case per rule"
   const auto* root = doc.FirstChildElement("testsuites");
   REQUIRE(root);
   CHECK(root->UnsignedAttribute("failures") == 4);
-  CHECK(root->UnsignedAttribute("tests") == 2 * kSelectedRules);
+  CHECK(root->UnsignedAttribute("errors") == 0);
   const auto* suite = root->FirstChildElement("testsuite");
   REQUIRE(suite);
   CHECK(std::string(suite->Attribute("name")) == "gripper.urdf");
+  // Two findings (limits-inverted, mimic-max-velocity) and the two rules without one.
   CHECK(suite->UnsignedAttribute("tests") == kSelectedRules);
   CHECK(suite->UnsignedAttribute("failures") == 2);
   std::size_t cases = 0, failures = 0;
+  std::vector<std::string> names;
   for (const auto* tc = suite->FirstChildElement("testcase"); tc; tc = tc->NextSiblingElement("testcase")) {
     ++cases;
+    names.emplace_back(tc->Attribute("name"));
     CHECK(std::string(tc->Attribute("classname")) == "gripper.urdf");
+    std::size_t in_case = 0;
     for (const auto* f = tc->FirstChildElement("failure"); f; f = f->NextSiblingElement("failure")) {
       ++failures;
-      if (std::string(tc->Attribute("name")) == "limits-inverted") {
+      ++in_case;
+      CHECK(std::string(tc->Attribute("file")) == "gripper.urdf");
+      if (names.back() == "limits-inverted (9:19)") {
+        CHECK(tc->UnsignedAttribute("line") == 9);
         CHECK(std::string(f->Attribute("type")) == "error");
-        CHECK(std::string(f->GetText()).rfind("9:19 revolute joint 'finger_joint'", 0) == 0);
+        CHECK(std::string(f->GetText()).rfind("gripper.urdf:9:19: revolute joint 'finger_joint'", 0) == 0);
         CHECK(std::string(f->Attribute("message")).find("'finger_joint'") != std::string::npos);
       }
     }
+    CHECK(in_case <= 1);  // readers show only a testcase's first failure
   }
+  CHECK(names == std::vector<std::string>{"limits-inverted (9:19)", "mimic-max-velocity (14:60)",
+                                          "stale-schema-attribute", "unused-suppression"});
   CHECK(cases == kSelectedRules);
   CHECK(failures == 2);
   const auto* usda = suite->NextSiblingElement("testsuite");
   REQUIRE(usda);
   CHECK(std::string(usda->Attribute("name")) == "joints.usda");
   CHECK(usda->UnsignedAttribute("failures") == 2);
+  CHECK(root->UnsignedAttribute("tests") == suite->UnsignedAttribute("tests") + usda->UnsignedAttribute("tests"));
 
-  // Without --select every rule of the catalog is a testcase.
-  auto all = run_cli({"--output-format", "junit", "gripper.urdf"}, report_dir());
+  // Without --select every rule of the catalog without a finding is a passing testcase.
+  auto all = run_cli({"--output-format", "junit", "--select", "limits-inverted,mimic-*,structure-*", "gripper.urdf"},
+                     report_dir());
   tinyxml2::XMLDocument full;
   REQUIRE(full.Parse(all.out.c_str(), all.out.size()) == tinyxml2::XML_SUCCESS);
-  CHECK(full.FirstChildElement("testsuites")->FirstChildElement("testsuite")->UnsignedAttribute("tests") ==
-        assetlint::rules::catalog().size());
+  const auto* only = full.FirstChildElement("testsuites")->FirstChildElement("testsuite");
+  std::set<std::string> rules_seen;
+  std::size_t testcases = 0;
+  for (const auto* tc = only->FirstChildElement("testcase"); tc; tc = tc->NextSiblingElement("testcase")) {
+    ++testcases;
+    const std::string name = tc->Attribute("name");
+    rules_seen.insert(name.substr(0, name.find(' ')));
+  }
+  CHECK(only->UnsignedAttribute("tests") == testcases);
+  for (const auto* rule : assetlint::rules::catalog()) {
+    const bool selected =
+        rule->id == "limits-inverted" || rule->id.starts_with("mimic-") || rule->id.starts_with("structure-");
+    CHECK(rules_seen.count(std::string(rule->id)) == (selected ? 1u : 0u));
+  }
   CHECK(assetlint::xml_escape("a<b & \"c\" 'd'\x01") == "a&lt;b &amp; &quot;c&quot; &apos;d&apos;?");
 }
 

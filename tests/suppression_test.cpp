@@ -285,3 +285,20 @@ TEST_CASE("suppress: the scanners survive truncated and odd input", "[suppress]"
   CHECK(usda.substr(usd[0].begin, usd[0].end - usd[0].begin) == "over \"x\" {\n  float y = 1\n}");
   CHECK(usda.substr(usd[1].begin, usd[1].end - usd[1].begin) == "class \"c\" {\n}");
 }
+
+TEST_CASE("path globs with many stars match a long path by dynamic programming", "[suppressions]") {
+  // A backtracking matcher takes exponential time on these (seconds per file); the
+  // table-driven one is O(|pattern| · |path|). The answers must still be exact.
+  std::string path;
+  for (int i = 0; i < 40; ++i) path += "dir" + std::to_string(i) + "/";
+  const std::string name = "x" + std::string(60, 'a') + "x";
+  CHECK_FALSE(path_glob_match("**/**/**/**/x*x*x*x*x*x*y.urdf", path + name + ".urdf"));
+  CHECK(path_glob_match("**/**/**/**/x*x*y.urdf", path + "xaxbxy.urdf"));
+  CHECK_FALSE(path_glob_match("****************z", std::string(200, 'a')));
+  CHECK(path_glob_match("****************a", std::string(200, 'a')));
+  CHECK(path_glob_match("a/**/b/**/c.urdf", "a/b/c.urdf"));
+  CHECK(path_glob_match("a/**/b/**/c.urdf", "a/x/b/y/z/c.urdf"));
+  CHECK_FALSE(path_glob_match("a/**/b/**/c.urdf", "a/xb/c.urdf"));
+  CHECK(path_glob_match("**", "any/thing"));
+  CHECK_FALSE(path_glob_match("?", "/"));
+}

@@ -53,9 +53,10 @@ int run_files(const Options& options, std::ostream& out, std::ostream& err, std:
     fix_options.diff = options.diff;
     fix_options.unsafe = options.unsafe_fixes;
     fix_options.jobs = options.jobs;
+    fix_options.fail_on = *parse_severity(options.fail_on);
     return commands::run_fix_command(options.paths, resolver.as_function(), fix_options, out, err, write_report);
   }
-  return commands::run_check(expansion, resolver.as_function(), commands::CheckOptions{options.jobs}, err,
+  return commands::run_check(expansion, resolver.as_function(), commands::CheckOptions{options.jobs, *parse_severity(options.fail_on)}, err,
                              write_report);
 }
 
@@ -63,7 +64,8 @@ int run_check_command(const std::vector<std::string>& args, std::ostream& out, s
                       bool out_is_terminal) {
   ParsedOptions parsed = parse_options(args, out, err);
   if (!parsed.options) return parsed.exit_code;
-  const Options& options = *parsed.options;
+  Options& options = *parsed.options;
+  if (options.paths.empty()) options.paths.push_back(".");  // like ruff: the working directory
   if (options.version) {
     out << "asset-lint " << ASSET_LINT_VERSION << "\n";
     return kExitClean;

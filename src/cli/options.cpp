@@ -17,10 +17,13 @@ void add_options(CLI::App& app, Options& o) {
       ->delimiter(',')
       ->allow_extra_args(false);
   app.add_option("--ignore", o.ignore, "Skip these rules (comma list, globs)")->delimiter(',')->allow_extra_args(false);
-  app.add_option("--output-format", o.format, "Output format: text, concise, json, sarif, github or junit")
-      ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "junit"}));
+  app.add_option("--output-format", o.format, "Output format: text, concise, json, sarif, github, gitlab or junit")
+      ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "gitlab", "junit"}));
   app.add_option("--output-file", o.output_file, "Write the report to this file instead of standard output");
   app.add_flag("--statistics", o.statistics, "Print the number of findings per rule instead of the findings");
+  app.add_option("--fail-on", o.fail_on,
+                 "The least severe finding that makes the exit status 1: info, warning (default) or error")
+      ->check(CLI::IsMember({"info", "warning", "error"}));
   app.add_flag("--exit-zero", o.exit_zero, "Exit 0 even when findings remain (still 2 on errors)");
   app.add_flag("-q,--quiet", o.quiet, "Text output: only the findings, no summary line");
   app.add_option("--color", o.color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
@@ -47,7 +50,8 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--version", o.version, "Print the version and exit");
   app.footer(
       "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
-      "Exit status: 0 nothing reported, 1 findings remain, 2 usage, configuration or I/O error.\n"
+      "Exit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
+      "remain, 2 usage, configuration or I/O error.\n"
       "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
 }
 
@@ -89,11 +93,12 @@ ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& 
 }
 
 bool validate_options(const Options& o, std::ostream& err) {
-  if (o.paths.empty()) {
-    err << "asset-lint: error: no files to check; usage: asset-lint [check] PATH...\n";
+  if (!validate_patterns(o.select, "--select", err) || !validate_patterns(o.ignore, "--ignore", err)) return false;
+  if (o.diff && o.format != "text" && o.format != "concise") {
+    err << "asset-lint: error: --diff prints a unified diff; it cannot be combined with --output-format " << o.format
+        << "\n";
     return false;
   }
-  if (!validate_patterns(o.select, "--select", err) || !validate_patterns(o.ignore, "--ignore", err)) return false;
   if (o.statistics && o.format != "text" && o.format != "concise" && o.format != "json") {
     err << "asset-lint: error: --statistics works with --output-format text, concise or json\n";
     return false;
@@ -110,7 +115,7 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   overrides.allow_outside_root = o.allow_outside_root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : o.paths)
-    if (std::filesystem::is_directory(path)) overrides.trees.push_back(path);
+    if (std::error_code ec; std::filesystem::is_directory(path, ec)) overrides.trees.push_back(path);
   return overrides;
 }
 

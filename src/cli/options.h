@@ -17,6 +17,7 @@ struct Options {
   bool select_given = false, ignore_given = false;
   std::string format = "text";
   std::string color = "auto";
+  std::string fail_on = "warning";
   bool list_rules = false, version = false;
   bool fix = false, unsafe_fixes = false, diff = false;
   bool statistics = false, exit_zero = false, quiet = false;

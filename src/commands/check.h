@@ -7,18 +7,25 @@
 
 #include "pipeline/discovery.h"
 #include "pipeline/lint.h"
+#include "pipeline/run.h"
 
 namespace assetlint::commands {
 
-using WriteReport = std::function<void(const std::vector<FileReport>&)>;
+using WriteReport = std::function<void(const std::vector<FileReport>&, const RunProblems&)>;
 
 struct CheckOptions {
   unsigned jobs = 1;
+  Severity fail_on = Severity::Warning;  // the least severe finding that fails the run
 };
 
 // Lints `expansion.files`, writes the reports with `write_report`, names every I/O
-// error on `err`. Returns 2 when a path or file could not be read, 1 when findings
-// remain, 0 otherwise.
+// error on `err` (and in the report) and warns about directories without assets.
+// Returns 2 when a path or file could not be read, 1 when findings at or above
+// `options.fail_on` remain, 0 otherwise.
+// Names the expansion's errors on `err`, warns about directories without assets;
+// returns them for the report.
+RunProblems announce_expansion(const PathExpansion& expansion, std::ostream& err);
+
 int run_check(const PathExpansion& expansion, const SettingsFor& settings, const CheckOptions& options,
               std::ostream& err, const WriteReport& write_report);
 

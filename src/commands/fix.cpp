@@ -35,23 +35,24 @@ std::string diff_label(const char* prefix, const std::string& path) {
 int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& settings,
                     const FixCommandOptions& options, std::ostream& out, std::ostream& err,
                     const WriteReport& write_report) {
-  bool failed = false;
+  RunProblems run_problems;
   // Each file may be edited within the tree it was found in: a directory argument's
   // tree, or a file argument's own directory.
   std::vector<Target> targets;
   std::set<std::string> seen;
   for (const auto& argument : paths) {
     PathExpansion expansion = expand_paths({argument});
-    for (const auto& message : expansion.errors) {
-      err << "asset-lint: error: " << message << "\n";
-      failed = true;
-    }
+    RunProblems found = announce_expansion(expansion, err);
+    run_problems.errors.insert(run_problems.errors.end(), found.errors.begin(), found.errors.end());
+    run_problems.binary_usd += found.binary_usd;
     for (auto& file : expansion.files) {
       // A file named twice (`a.urdf a.urdf`, `dir dir/a.urdf`) is fixed once.
       std::error_code ec;
       const auto canonical = std::filesystem::weakly_canonical(file, ec);
       if (!seen.insert(ec ? file : canonical.string()).second) continue;
-      fix::EditScope scope = file == argument ? fix::default_scope(file) : fix::tree_scope(argument);
+      std::error_code dir_ec;
+      fix::EditScope scope = std::filesystem::is_directory(argument, dir_ec) ? fix::tree_scope(argument)
+                                                                              : fix::default_scope(file);
       targets.push_back({std::move(file), std::move(scope)});
     }
   }
@@ -79,7 +80,7 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
     for (const auto& message : result.notes) err << "asset-lint: note: " << message << "\n";
     if (result.error) {
       err << "asset-lint: error: " << *result.error << "\n";
-      failed = true;
+      run_problems.errors.push_back({result.path, *result.error});
       if (!result.initial.error) remaining.push_back(std::move(result.initial));
       continue;
     }
@@ -95,13 +96,13 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
     for (const fix::FixedFile& file : result.files) {
       if (auto message = fix::write_fixed_file(file)) {
         err << "asset-lint: error: " << *message << "\n";
+        run_problems.errors.push_back({file.path, *message});
         write_failed = true;
         continue;
       }
       err << fmt::format("asset-lint: fixed {} in {}\n", problems(file.fixes), file.path);
     }
     if (write_failed) {
-      failed = true;
       // Report what is on disk now.
       remaining.push_back(lint_file(result.path, settings(result.path)));
     } else {
@@ -109,13 +110,15 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
     }
   }
 
-  if (options.diff) return failed ? kExitError : any_diff ? kExitFindings : kExitClean;
+  const bool failed = !run_problems.errors.empty();
+  if (options.diff) {
+    if (!failed && !any_diff) err << "asset-lint: no fix applies; nothing to change\n";
+    return failed ? kExitError : any_diff ? kExitFindings : kExitClean;
+  }
   std::erase_if(remaining, [](const FileReport& r) { return r.error.has_value(); });
-  write_report(remaining);
+  write_report(remaining, run_problems);
   if (failed) return kExitError;
-  return std::all_of(remaining.begin(), remaining.end(), [](const FileReport& r) { return r.diagnostics.empty(); })
-             ? kExitClean
-             : kExitFindings;
+  return findings_status(remaining, options.fail_on);
 }
 
 }  // namespace assetlint::commands

@@ -14,6 +14,7 @@ struct FixCommandOptions {
   bool diff = false;    // print a unified diff instead of writing
   bool unsafe = false;  // --unsafe-fixes
   unsigned jobs = 1;
+  Severity fail_on = Severity::Warning;
 };
 
 // Fixes the files under `paths` (directories searched as for checking). With `diff`,

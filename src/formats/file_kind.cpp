@@ -15,7 +15,11 @@ FileKind file_kind(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == ".urdf") return FileKind::Urdf;
   if (ext == ".usda") return FileKind::Usda;
+  if (ext == ".usd") return FileKind::Usd;
+  if (ext == ".usdc" || ext == ".usdz") return FileKind::BinaryUsd;
   return FileKind::Unsupported;
 }
+
+FileKind usd_kind(std::string_view head) { return head.starts_with("#usda") ? FileKind::Usda : FileKind::BinaryUsd; }
 
 }  // namespace assetlint

@@ -1,11 +1,16 @@
 #pragma once
 #include <string>
+#include <string_view>
 
 namespace assetlint {
 
-// Which reader a file needs, by its extension (case-insensitive).
-enum class FileKind { Urdf, Usda, Unsupported };
+// Which reader a file needs, by its extension (case-insensitive). A `.usd` file may be
+// text or a binary crate: `Usd` until its first bytes say which (usd_kind).
+enum class FileKind { Urdf, Usda, Usd, BinaryUsd, Unsupported };
 FileKind file_kind(const std::string& path);
+
+// A `.usd` file's kind by its first bytes: text layers start with `#usda`.
+FileKind usd_kind(std::string_view head);
 
 // The lower-case extension of `path`, with its dot ("" when none).
 std::string extension_of(const std::string& path);

@@ -1,16 +1,33 @@
 #pragma once
 // Which files a run checks, from the paths named on the command line.
+#include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace assetlint {
 
-// Files to check for the given paths: files as given, directories searched
-// recursively for *.urdf and *.usda (hidden directories skipped), sorted.
-struct PathExpansion {
-  std::vector<std::string> files;
-  std::vector<std::string> errors;  // paths that do not exist
+// A path that could not be looked at: it is named, never skipped in silence.
+struct PathError {
+  std::string path;
+  std::string message;  // "cannot read directory 'x': Permission denied"
 };
+
+struct PathExpansion {
+  std::vector<std::string> files;           // to check, each directory's sorted
+  std::vector<PathError> errors;            // named paths that do not exist; directories not read
+  std::vector<std::string> binary_usd;      // .usdc/.usdz and binary .usd files found (not checked)
+  std::vector<std::string> without_assets;  // directories named that hold no asset file
+};
+
+// A path as every report spells it, so that baseline keys and fingerprints do not depend
+// on how the tool was invoked: lexically normal, '/'-separated, no "./" prefix, relative
+// to `cwd` when inside it.
+std::string spelled(const std::filesystem::path& path, const std::filesystem::path& cwd);
+
+// Files as given (spelled as above); directories searched recursively (hidden directories skipped) for
+// *.urdf, *.usda and text .usd files (a `#usda` header). A directory or entry that cannot
+// be read is an error naming it; the rest of the walk goes on.
 PathExpansion expand_paths(const std::vector<std::string>& paths);
 
 }  // namespace assetlint

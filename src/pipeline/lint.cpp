@@ -37,9 +37,9 @@ std::string tree_of(const std::string& path, const std::vector<std::string>& tre
   return best;
 }
 
-ReadResult read(const std::string& path, std::shared_ptr<const SourceFile> file, const FileSystem& files,
-                const Settings& settings) {
-  switch (file_kind(path)) {
+ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const SourceFile> file,
+                const FileSystem& files, const Settings& settings) {
+  switch (kind) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files,
@@ -63,12 +63,20 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
   FileReport report;
   report.path = path;
-  if (file_kind(path) == FileKind::Unsupported) {
-    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf and .usda files)", extension_of(path));
+  FileKind kind = file_kind(path);
+  if (kind == FileKind::Usd) kind = usd_kind(text);
+  if (kind == FileKind::BinaryUsd) {
+    report.error = fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting "
+                               "with '#usda 1.0')", path);
+    return report;
+  }
+  if (kind == FileKind::Unsupported) {
+    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda and text .usd files)",
+                               extension_of(path));
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
-  ReadResult result = read(path, std::move(file), files, settings);
+  ReadResult result = read(path, kind, std::move(file), files, settings);
   std::vector<Diagnostic> diagnostics;
   for (auto& d : result.diagnostics)
     if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));

@@ -9,7 +9,8 @@ namespace assetlint {
 void write_concise(std::ostream& out, const std::vector<FileReport>& reports) {
   for (const auto& report : reports)
     for (const auto& d : report.diagnostics)
-      out << fmt::format("{}:{}:{}: {} {}\n", diagnostic_path(report, d), d.span.line, d.span.column, d.rule, d.message);
+      out << fmt::format("{}:{}:{}: {} {}\n", one_line(diagnostic_path(report, d)), d.span.line, d.span.column, d.rule,
+                         one_line(d.message));
 }
 
 }  // namespace assetlint

@@ -40,7 +40,10 @@ std::string with_notes(const FileReport& report, const Diagnostic& d) {
 
 }  // namespace
 
-void write_github(std::ostream& out, const std::vector<FileReport>& reports) {
+void write_github(std::ostream& out, const std::vector<FileReport>& reports, const RunProblems& problems) {
+  for (const auto& error : problems.errors)
+    out << fmt::format("::error file={},title={}::{}\n", github_escape_property(error.path),
+                       github_escape_property("asset-lint (I/O error)"), github_escape_data(error.message));
   for (const auto& report : reports) {
     for (const auto& d : report.diagnostics) {
       const char* command = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "notice";

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "pipeline/lint.h"
+#include "pipeline/run.h"
 
 namespace assetlint {
 
@@ -12,7 +13,7 @@ namespace assetlint {
 // `::error file=F,line=L,col=C,endLine=L2,endColumn=C2,title=asset-lint (rule)::message`
 // (`::warning` and `::notice` for the other severities). Workflow runners turn them into
 // annotations on the pull request.
-void write_github(std::ostream& out, const std::vector<FileReport>& reports);
+void write_github(std::ostream& out, const std::vector<FileReport>& reports, const RunProblems& problems = {});
 
 // Escaping of a command's message (`%`, CR, LF) and of a property value (also `:` and `,`).
 std::string github_escape_data(std::string_view text);

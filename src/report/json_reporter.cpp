@@ -7,7 +7,7 @@
 
 namespace assetlint {
 
-void write_json(std::ostream& out, const std::vector<FileReport>& reports) {
+void write_json(std::ostream& out, const std::vector<FileReport>& reports, const RunProblems& problems) {
   using nlohmann::ordered_json;
   ordered_json diagnostics = ordered_json::array();
   for (const auto& report : reports) {
@@ -59,9 +59,14 @@ void write_json(std::ostream& out, const std::vector<FileReport>& reports) {
   doc["version"] = 1;
   doc["tool"] = {{"name", "asset-lint"}, {"version", ASSET_LINT_VERSION}};
   doc["diagnostics"] = std::move(diagnostics);
+  // Paths the run could not read (the run exits 2): each with its path and message.
+  ordered_json errors = ordered_json::array();
+  for (const auto& error : problems.errors) errors.push_back({{"path", error.path}, {"message", error.message}});
+  doc["errors"] = std::move(errors);
   doc["summary"] = {{"files", s.files},     {"problems", s.total()},  {"errors", s.errors},
                     {"warnings", s.warnings}, {"infos", s.infos},      {"fixable", s.fixable},
-                    {"unsafe_fixable", s.unsafe_fixable}};
+                    {"unsafe_fixable", s.unsafe_fixable}, {"not_read", problems.errors.size()},
+                    {"skipped_binary_usd", problems.binary_usd}};
   out << doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 

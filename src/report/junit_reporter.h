@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pipeline/lint.h"
+#include "pipeline/run.h"
 
 namespace assetlint {
 
@@ -15,9 +16,12 @@ std::vector<std::string> rules_run_on(const Settings& settings, std::string_view
 
 using RulesRun = std::function<std::vector<std::string>(const FileReport&)>;
 
-// JUnit XML: one <testsuite> per checked file (name = its path), one <testcase> per rule
-// that ran on it (classname = the path, name = the rule id), a <failure> per finding.
-void write_junit(std::ostream& out, const std::vector<FileReport>& reports, const RulesRun& rules_run);
+// JUnit XML: one <testsuite> per checked file (name = its path); one <testcase> per
+// finding (classname = the path, name = "rule-id (line:column)", file and line
+// attributes) holding its <failure>, and one passing <testcase> per rule that ran on the
+// file without a finding (name = the rule id). Paths not read are <error> testcases.
+void write_junit(std::ostream& out, const std::vector<FileReport>& reports, const RulesRun& rules_run,
+                 const RunProblems& problems = {});
 
 // XML text with &, <, >, " and ' escaped, and characters XML 1.0 cannot hold replaced.
 std::string xml_escape(std::string_view text);

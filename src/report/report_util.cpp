@@ -4,6 +4,20 @@
 
 namespace assetlint {
 
+std::string one_line(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (ch == '\n') out += "\\n";
+    else if (ch == '\r') out += "\\r";
+    else if (ch == '\t') out += "\\t";
+    else if (c < 0x20 || c == 0x7F) out += fmt::format("\\x{:02X}", c);
+    else out += ch;
+  }
+  return out;
+}
+
 std::string help_line(const Fix& fix) {
   switch (fix.applicability) {
     case Applicability::Safe: return "fix: " + fix.title;

@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers the report writers share.
 #include <string>
+#include <string_view>
 
 #include "pipeline/lint.h"
 
@@ -19,6 +20,11 @@ inline const std::string& note_path(const FileReport& report, const Note& note) 
 // "fix: set stiffness …", "unsafe fix: …" or "suggestion: …": what the fix writes and
 // how far it is trusted.
 std::string help_line(const Fix& fix);
+
+// Text from an asset (joint names, prim paths, file names) on one printable line:
+// control characters become \n, \r, \t or \xNN, so that a crafted name cannot start a
+// line of its own (a CI log command such as `::warning`).
+std::string one_line(std::string_view text);
 
 // The finding's notes and help as plain lines, for formats that carry one text body.
 std::string notes_text(const FileReport& report, const Diagnostic& d);

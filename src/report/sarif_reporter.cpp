@@ -103,7 +103,8 @@ std::string sarif_uri(std::string_view path, std::string_view source_root, bool&
   return "file://" + percent_encode(absolute.generic_string());
 }
 
-void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, const SarifOptions& options) {
+void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, const SarifOptions& options,
+                 const RunProblems& problems) {
   ordered_json rules = ordered_json::array();
   std::map<std::string_view, std::size_t, std::less<>> rule_index;
   for (const RuleInfo* rule : rules::catalog()) {
@@ -207,6 +208,18 @@ void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, cons
     if (root.back() != '/') root += '/';
     run["originalUriBaseIds"] = {{"%SRCROOT%", {{"uri", root}}}};
   }
+  // The invocation says whether the run looked at everything: each path it could not
+  // read is a tool execution notification, and makes the execution unsuccessful.
+  ordered_json notifications = ordered_json::array();
+  for (const auto& error : problems.errors) {
+    notifications.push_back({{"level", "error"},
+                             {"message", message(error.message)},
+                             {"locations", ordered_json::array({{{"physicalLocation",
+                                                                  {{"artifactLocation", location(error.path)}}}}})}});
+  }
+  ordered_json invocation{{"executionSuccessful", problems.errors.empty()}};
+  if (!notifications.empty()) invocation["toolExecutionNotifications"] = std::move(notifications);
+  run["invocations"] = ordered_json::array({std::move(invocation)});
   run["columnKind"] = "unicodeCodePoints";
   run["results"] = std::move(results);
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "pipeline/lint.h"
+#include "pipeline/run.h"
 
 namespace assetlint {
 
@@ -16,7 +17,8 @@ struct SarifOptions {
 
 // SARIF 2.1.0, as GitHub code scanning reads it: one run, the tool's whole rule catalog in
 // tool.driver.rules, one result per finding, fixes as byte-range replacements.
-void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, const SarifOptions& options);
+void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, const SarifOptions& options,
+                 const RunProblems& problems = {});
 
 // A path as a URI reference relative to `source_root` (forward slashes, percent-encoded),
 // or an absolute file:// URI for a file outside it. `relative` says which it is.

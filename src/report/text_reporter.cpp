@@ -23,7 +23,8 @@ std::string plural(std::size_t n, std::string_view word) {
 
 }  // namespace
 
-void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options) {
+void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options,
+                const RunProblems& problems) {
   const char* bold = options.color ? "\033[1m" : "";
   const char* dim = options.color ? "\033[2m" : "";
   const char* reset = options.color ? "\033[0m" : "";
@@ -33,29 +34,37 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
       std::string marker;
       if (d.fix && d.fix->applicability == Applicability::Safe) marker = " (fixable)";
       else if (d.fix && d.fix->applicability == Applicability::Unsafe) marker = " (unsafe fix)";
-      out << fmt::format("{}{}:{}:{}:{} {}{}:{} {} {}[{}]{}{}\n", bold, path, d.span.line, d.span.column, reset,
-                         options.color ? severity_color(d.severity) : "", severity_name(d.severity), reset, d.message,
+      out << fmt::format("{}{}:{}:{}:{} {}{}:{} {} {}[{}]{}{}\n", bold, one_line(path), d.span.line, d.span.column, reset,
+                         options.color ? severity_color(d.severity) : "", severity_name(d.severity), reset,
+                         one_line(d.message),
                          dim, d.rule, marker, reset);
       for (const Note& note : d.notes) {
         if (note.span.valid())
-          out << fmt::format("  {}{}:{}:{}:{} {}note:{} {}\n", bold, note_path(report, note), note.span.line,
-                             note.span.column, reset, bold, reset, note.message);
+          out << fmt::format("  {}{}:{}:{}:{} {}note:{} {}\n", bold, one_line(note_path(report, note)),
+                             note.span.line, note.span.column, reset, bold, reset, one_line(note.message));
         else
-          out << fmt::format("  {}note:{} {}\n", bold, reset, note.message);
+          out << fmt::format("  {}note:{} {}\n", bold, reset, one_line(note.message));
       }
-      if (d.fix) out << fmt::format("  {}help:{} {}\n", bold, reset, help_line(*d.fix));
+      if (d.fix) out << fmt::format("  {}help:{} {}\n", bold, reset, one_line(help_line(*d.fix)));
     }
   }
   if (!options.show_summary) return;
   const Summary s = summarize(reports);
+  // What was not looked at comes first: a run with I/O errors is never reported as clean.
+  std::string line;
+  if (!problems.errors.empty())
+    line = fmt::format("{} could not be read (errors above); ", plural(problems.errors.size(), "path"));
   if (s.total() == 0) {
-    out << fmt::format("No problems found in {}.\n", plural(s.files, "file"));
-    return;
+    line += fmt::format("{}o problems found in {}.", line.empty() ? "N" : "n", plural(s.files, "file"));
+  } else {
+    line += fmt::format("{}ound {} ({}, {}, {}) in {}.", line.empty() ? "F" : "f", plural(s.total(), "problem"),
+                        plural(s.errors, "error"), plural(s.warnings, "warning"), plural(s.infos, "info"),
+                        plural(s.files, "file"));
+    if (s.fixable || s.unsafe_fixable)
+      line += fmt::format(" {} fixable with --fix ({} more with --unsafe-fixes).", s.fixable, s.unsafe_fixable);
   }
-  std::string line = fmt::format("Found {} ({}, {}, {}) in {}.", plural(s.total(), "problem"), plural(s.errors, "error"),
-                                 plural(s.warnings, "warning"), plural(s.infos, "info"), plural(s.files, "file"));
-  if (s.fixable || s.unsafe_fixable)
-    line += fmt::format(" {} fixable with --fix ({} more with --unsafe-fixes).", s.fixable, s.unsafe_fixable);
+  if (problems.binary_usd)
+    line += fmt::format(" Skipped {} (asset-lint reads text USD).", plural(problems.binary_usd, "binary USD file"));
   out << line << "\n";
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "pipeline/lint.h"
+#include "pipeline/run.h"
 
 namespace assetlint {
 
@@ -12,6 +13,7 @@ struct TextOptions {
 };
 
 // One line per finding, `path:line:col: severity: message [rule-id]`, then a summary.
-void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options);
+void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options,
+                const RunProblems& problems = {});
 
 }  // namespace assetlint

@@ -1,0 +1,97 @@
+// Exit status and CI reports for adopting asset-lint on an existing repository:
+// --fail-on, no path = the working directory, --diff usage, escaping of asset names,
+// GitLab Code Quality.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "report/gitlab_reporter.h"
+#include "test_support.h"
+
+using assetlint::test::read_file;
+using assetlint::test::run_cli;
+using assetlint::test::TempDir;
+using assetlint::test::write_file;
+
+namespace {
+
+std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
+
+// A joint name holding a line break and a GitHub workflow command.
+const char* kInjectingUrdf =
+    "<robot name=\"r\">\n  <link name=\"a\"/>\n  <link name=\"b\"/>\n"
+    "  <joint name=\"j&#10;::warning file=x::pwned\" type=\"revolute\">\n    <parent link=\"a\"/>\n"
+    "    <child link=\"b\"/>\n    <limit lower=\"1\" upper=\"0\" effort=\"1\" velocity=\"1\"/>\n  </joint>\n</robot>\n";
+
+}  // namespace
+
+TEST_CASE("adoption: infos never fail the run unless --fail-on info; --fail-on error", "[adoption]") {
+  const std::vector<std::string> infos_only = {"--select", "stale-schema-attribute", "joints.usda"};
+  auto r = run_cli(infos_only, report_dir());
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("2 infos") != std::string::npos);
+  std::vector<std::string> strict = {"--fail-on", "info"};
+  strict.insert(strict.end(), infos_only.begin(), infos_only.end());
+  CHECK(run_cli(strict, report_dir()).exit_code == 1);
+  CHECK(run_cli({"--select", "mimic-max-velocity", "gripper.urdf"}, report_dir()).exit_code == 1);
+  CHECK(run_cli({"--fail-on", "error", "--select", "mimic-max-velocity", "gripper.urdf"}, report_dir()).exit_code == 0);
+  CHECK(run_cli({"--fail-on", "error", "--select", "limits-inverted", "gripper.urdf"}, report_dir()).exit_code == 1);
+  CHECK(run_cli({"--fail-on", "fatal", "gripper.urdf"}, report_dir()).exit_code == 2);
+}
+
+TEST_CASE("adoption: no path checks the working directory", "[adoption]") {
+  TempDir dir;
+  write_file(dir.path() / "gripper.urdf", read_file(report_dir() / "gripper.urdf"));
+  auto r = run_cli({"--select", "limits-inverted", "--output-format", "concise"}, dir.path());
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.rfind("gripper.urdf:9:19: limits-inverted ", 0) == 0);
+}
+
+TEST_CASE("adoption: --diff with a structured format is a usage error; a clean --diff says so", "[adoption]") {
+  auto r = run_cli({"--diff", "--output-format", "json", "gripper.urdf"}, report_dir());
+  CHECK(r.exit_code == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err == "asset-lint: error: --diff prints a unified diff; it cannot be combined with --output-format json\n");
+  auto clean = run_cli({"--diff", "--select", "stale-schema-attribute", "joints.usda"}, report_dir());
+  CHECK(clean.exit_code == 0);
+  CHECK(clean.out.empty());
+  CHECK(clean.err == "asset-lint: no fix applies; nothing to change\n");
+}
+
+TEST_CASE("adoption: control characters in asset names are escaped in text, concise and github", "[adoption]") {
+  TempDir dir;
+  write_file(dir.path() / "inj.urdf", kInjectingUrdf);
+  for (const char* format : {"text", "concise", "github"}) {
+    INFO(format);
+    auto r = run_cli({"--select", "limits-inverted", "--output-format", format, "inj.urdf"}, dir.path());
+    CHECK(r.exit_code == 1);
+    // No line of the output starts a workflow command other than the finding's own.
+    CHECK(r.out.find("\n::warning") == std::string::npos);
+    CHECK(r.out.find("j\n") == std::string::npos);
+  }
+  auto text = run_cli({"--select", "limits-inverted", "--output-format", "concise", "inj.urdf"}, dir.path());
+  CHECK(text.out.find("'j\\n::warning file=x::pwned'") != std::string::npos);
+}
+
+TEST_CASE("adoption: GitLab Code Quality report with stable fingerprints", "[adoption][report]") {
+  auto r = run_cli({"--output-format", "gitlab", "--select", "limits-inverted,mimic-max-velocity", "gripper.urdf"},
+                   report_dir());
+  CHECK(r.exit_code == 1);
+  const auto issues = nlohmann::json::parse(r.out);
+  REQUIRE(issues.is_array());
+  REQUIRE(issues.size() == 2);
+  const auto& first = issues[0];
+  CHECK(first["check_name"] == "limits-inverted");
+  CHECK(first["severity"] == "major");
+  CHECK(first["location"]["path"] == "gripper.urdf");
+  CHECK(first["location"]["lines"]["begin"] == 9);
+  CHECK(first["description"].get<std::string>().rfind("revolute joint 'finger_joint' has lower limit", 0) == 0);
+  CHECK(issues[1]["severity"] == "minor");
+  CHECK(first["fingerprint"].get<std::string>().size() == 32);
+  CHECK(first["fingerprint"] != issues[1]["fingerprint"]);
+  // The same finding gets the same fingerprint in another run and from another directory.
+  auto again = run_cli({"--output-format", "gitlab", "--select", "limits-inverted", "./gripper.urdf"}, report_dir());
+  CHECK(nlohmann::json::parse(again.out)[0]["fingerprint"] == first["fingerprint"]);
+  // No line number in it: a finding that moves keeps its fingerprint; occurrences differ.
+  CHECK(assetlint::gitlab_fingerprint("r", "p", "m", 0) == assetlint::gitlab_fingerprint("r", "p", "m", 0));
+  CHECK(assetlint::gitlab_fingerprint("r", "p", "m", 0) != assetlint::gitlab_fingerprint("r", "p", "m", 1));
+}
