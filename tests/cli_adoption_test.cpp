@@ -95,3 +95,36 @@ TEST_CASE("adoption: GitLab Code Quality report with stable fingerprints", "[ado
   CHECK(assetlint::gitlab_fingerprint("r", "p", "m", 0) == assetlint::gitlab_fingerprint("r", "p", "m", 0));
   CHECK(assetlint::gitlab_fingerprint("r", "p", "m", 0) != assetlint::gitlab_fingerprint("r", "p", "m", 1));
 }
+
+TEST_CASE("adoption: standard input is linted as the file --stdin-filename names", "[adoption][stdin]") {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "robots");
+  // The file's own configuration applies: per-file-ignores relative to it.
+  write_file(dir.path() / "asset-lint.toml", "[per-file-ignores]\n\"legacy/*.urdf\" = [\"limits-inverted\"]\n");
+  const std::string gripper = read_file(report_dir() / "gripper.urdf");
+  auto r = assetlint::test::run_cli_with_input(
+      {"check", "-", "--stdin-filename", "robots/gripper.urdf", "--select", "limits-inverted", "--output-format",
+       "concise"},
+      dir.path(), gripper);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.rfind("robots/gripper.urdf:9:19: limits-inverted ", 0) == 0);
+  auto ignored = assetlint::test::run_cli_with_input(
+      {"-", "--stdin-filename", "legacy/gripper.urdf", "--select", "limits-inverted"}, dir.path(), gripper);
+  CHECK(ignored.exit_code == 0);
+  CHECK(!std::filesystem::exists(dir.path() / "robots" / "gripper.urdf"));  // nothing written
+
+  // With --fix the fixed text goes to standard output; only the bytes that change differ.
+  auto fixed = assetlint::test::run_cli_with_input(
+      {"-", "--stdin-filename", "robots/gripper.urdf", "--select", "limits-inverted", "--fix", "--unsafe-fixes"},
+      dir.path(), gripper);
+  CHECK(fixed.exit_code == 0);
+  std::string expected = gripper;
+  const std::string before = "lower=\"0.82\" upper=\"0\"";
+  REQUIRE(expected.find(before) != std::string::npos);
+  expected.replace(expected.find(before), before.size(), "lower=\"0\" upper=\"0.82\"");
+  CHECK(fixed.out == expected);
+
+  auto usage = run_cli({"-"}, dir.path());
+  CHECK(usage.exit_code == 2);
+  CHECK(usage.err == "asset-lint: error: '-' (standard input) must be the only path, with --stdin-filename PATH\n");
+}

@@ -38,11 +38,18 @@ std::string shell_quote(const std::string& arg) {
 }  // namespace
 
 CommandResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd) {
+  return run_cli_with_input(args, cwd, "");
+}
+
+CommandResult run_cli_with_input(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                                 const std::string& input) {
   TempDir capture;
-  const auto out_path = capture.path() / "out", err_path = capture.path() / "err";
+  const auto out_path = capture.path() / "out", err_path = capture.path() / "err", in_path = capture.path() / "in";
+  write_file(in_path, input);
   std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_quote(ASSET_LINT_BINARY);
   for (const auto& arg : args) command += " " + shell_quote(arg);
-  command += " >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string()) + " </dev/null";
+  command += " >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string()) + " <" +
+             shell_quote(in_path.string());
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -21,6 +21,9 @@ struct CommandResult {
 };
 // Runs the built asset-lint binary with `args` (each shell-quoted) in `cwd`.
 CommandResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd = source_dir());
+// The same, with `input` on standard input.
+CommandResult run_cli_with_input(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                                 const std::string& input);
 
 // A fresh empty directory under the system temp dir, removed by the destructor.
 class TempDir {

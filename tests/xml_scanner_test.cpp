@@ -61,3 +61,13 @@ TEST_CASE("the scanner reports the first well-formedness problem with its offset
     CHECK_FALSE(scan.recoverable);
   }
 }
+
+TEST_CASE("the scanner rejects control characters XML 1.0 forbids", "[urdf]") {
+  const std::string text = "<robot name=\"r\x01\">\n</robot>\n";
+  const XmlScan scan = scan_xml(text);
+  REQUIRE(scan.problems.size() == 1);
+  CHECK(scan.problems[0].offset == 14);
+  CHECK(scan.problems[0].message == "control character U+0001 is not allowed in XML 1.0");
+  CHECK_FALSE(scan.recoverable);
+  CHECK(scan_xml("<robot name=\"r\">\t\r\n</robot>\n").problems.empty());
+}

@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 
 #include "cli/options.h"
 #include "cli/report_writer.h"
@@ -11,6 +12,7 @@
 #include "commands/check.h"
 #include "commands/exit_status.h"
 #include "commands/fix.h"
+#include "commands/stdin.h"
 #include "config/resolver.h"
 #include "engine/file_system.h"
 #include "pipeline/discovery.h"
@@ -35,14 +37,25 @@ bool use_color(const Options& options, bool out_is_terminal) {
          (options.color == "auto" && out_is_terminal && options.output_file.empty() && !std::getenv("NO_COLOR"));
 }
 
-// Checks or fixes the files the options name, writing the report to `report_out`.
-int run_files(const Options& options, std::ostream& out, std::ostream& err, std::ostream& report_out,
-              bool out_is_terminal) {
+// Checks or fixes the files the options name (or standard input), writing the report to
+// `report_out`.
+int run_files(const Options& options, std::istream& in, std::ostream& out, std::ostream& err,
+              std::ostream& report_out, bool out_is_terminal) {
   config::SettingsResolver resolver(overrides_from(options), options.config_path.empty()
                                                                  ? std::nullopt
                                                                  : std::optional(options.config_path));
   const commands::WriteReport write_report =
       report_writer(options, use_color(options, out_is_terminal), resolver, report_out);
+  if (options.paths == std::vector<std::string>{"-"}) {
+    if (auto error = resolver.prepare({options.stdin_filename})) {
+      err << "asset-lint: error: " << error->to_string() << "\n";
+      return kExitError;
+    }
+    const commands::StdinOptions stdin_options{options.stdin_filename, options.fix, options.unsafe_fixes,
+                                               *parse_severity(options.fail_on)};
+    return commands::run_stdin(in, resolver.for_file(options.stdin_filename), stdin_options, out, err,
+                               write_report);
+  }
   const PathExpansion expansion = expand_paths(options.paths);
   if (auto error = resolver.prepare(expansion.files)) {
     err << "asset-lint: error: " << error->to_string() << "\n";
@@ -60,8 +73,8 @@ int run_files(const Options& options, std::ostream& out, std::ostream& err, std:
                              write_report);
 }
 
-int run_check_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
-                      bool out_is_terminal) {
+int run_check_command(const std::vector<std::string>& args, std::istream& in, std::ostream& out,
+                      std::ostream& err, bool out_is_terminal) {
   ParsedOptions parsed = parse_options(args, out, err);
   if (!parsed.options) return parsed.exit_code;
   Options& options = *parsed.options;
@@ -85,7 +98,7 @@ int run_check_command(const std::vector<std::string>& args, std::ostream& out, s
     }
   }
   const int code =
-      run_files(options, out, err, options.output_file.empty() ? out : report_file, out_is_terminal);
+      run_files(options, in, out, err, options.output_file.empty() ? out : report_file, out_is_terminal);
   if (!options.output_file.empty() && !report_file) {
     err << fmt::format("asset-lint: error: cannot write '{}'\n", options.output_file);
     return kExitError;
@@ -96,11 +109,16 @@ int run_check_command(const std::vector<std::string>& args, std::ostream& out, s
 
 }  // namespace
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
+int run(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err,
+        bool out_is_terminal) {
   if (!args.empty() && args.front() == "rule") return run_rule_command(args, out, err);
   if (!args.empty() && args.front() == "check")
-    return run_check_command({args.begin() + 1, args.end()}, out, err, out_is_terminal);
-  return run_check_command(args, out, err, out_is_terminal);
+    return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal);
+  return run_check_command(args, in, out, err, out_is_terminal);
+}
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool out_is_terminal) {
+  return run(args, std::cin, out, err, out_is_terminal);
 }
 
 }  // namespace assetlint::cli

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <thread>
 
@@ -19,6 +20,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--ignore", o.ignore, "Skip these rules (comma list, globs)")->delimiter(',')->allow_extra_args(false);
   app.add_option("--output-format", o.format, "Output format: text, concise, json, sarif, github, gitlab or junit")
       ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "gitlab", "junit"}));
+  app.add_option("--stdin-filename", o.stdin_filename,
+                 "With the path '-': lint standard input as this file (its configuration and layers); "
+                 "with --fix, print the fixed text");
   app.add_option("--output-file", o.output_file, "Write the report to this file instead of standard output");
   app.add_flag("--statistics", o.statistics, "Print the number of findings per rule instead of the findings");
   app.add_option("--fail-on", o.fail_on,
@@ -94,6 +98,15 @@ ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& 
 
 bool validate_options(const Options& o, std::ostream& err) {
   if (!validate_patterns(o.select, "--select", err) || !validate_patterns(o.ignore, "--ignore", err)) return false;
+  const bool stdin_named = std::find(o.paths.begin(), o.paths.end(), "-") != o.paths.end();
+  if (stdin_named && (o.paths.size() != 1 || o.stdin_filename.empty())) {
+    err << "asset-lint: error: '-' (standard input) must be the only path, with --stdin-filename PATH\n";
+    return false;
+  }
+  if (stdin_named && o.diff) {
+    err << "asset-lint: error: --diff does not read standard input; use --fix to print the fixed text\n";
+    return false;
+  }
   if (o.diff && o.format != "text" && o.format != "concise") {
     err << "asset-lint: error: --diff prints a unified diff; it cannot be combined with --output-format " << o.format
         << "\n";

@@ -22,6 +22,7 @@ struct Options {
   bool fix = false, unsafe_fixes = false, diff = false;
   bool statistics = false, exit_zero = false, quiet = false;
   std::string output_file;
+  std::string stdin_filename;  // with the path "-": the file the text on stdin stands for
   std::string config_path;
   bool allow_outside_root = false;
   std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read

@@ -31,6 +31,15 @@ class Scanner {
     std::size_t pos = 0;
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
     scan_.document_begin = pos;
+    // XML 1.0 allows no C0 control character but tab, LF and CR, not even in attribute
+    // values (libxml2, and so ROS, reject the file). NUL bytes have their own messages below.
+    for (std::size_t i = pos; i < text_.size(); ++i) {
+      const auto c = static_cast<unsigned char>(text_[i]);
+      if (c != 0 && c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+        problem(i, 1, fmt::format("control character U+{:04X} is not allowed in XML 1.0", c), false);
+        return std::move(scan_);
+      }
+    }
     scan_prolog(pos);
     if (!scan_.recoverable) return std::move(scan_);
     if (pos >= text_.size()) {
