@@ -25,7 +25,7 @@ N="nice -n 10"
 # median_of NAME: the median (s) from hyperfine's JSON export $work/NAME.json
 median_of() { sed -n 's/.*"median": *\([0-9.e-]*\).*/\1/p' "$work/$1.json" | head -1; }
 # peak_kb CMD...: the peak resident set of one run, in KiB
-peak_kb() { /usr/bin/time -f %M "$@" 2>&1 >/dev/null | tail -1; }
+peak_kb() { { /usr/bin/time -f %M "$@" 2>&1 >/dev/null || true; } | tail -1; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", a / b }'; }
 fmt() { awk -v a="$1" 'BEGIN { printf "%.4f", a }'; }
 hf() {  # hf NAME RUNS CMD
