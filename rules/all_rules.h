@@ -8,6 +8,7 @@ const Rule& structure_undefined_link();
 const Rule& structure_mimic_reference();
 const Rule& limits_inverted();
 const Rule& units_angle_degrees();
+const Rule& units_angle_radians();
 const Rule& units_velocity_implausible();
 const Rule& mimic_max_velocity();
 const Rule& mimic_limit_conflict();

@@ -17,27 +17,42 @@ class DriveDampingRatio final : public Rule {
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double low = rule_option(info_, settings, "min_ratio");
     const double high = rule_option(info_, settings, "max_ratio");
+    const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
-      auto driven = spring_drive(asset, joint, settings);
-      if (!driven || (driven->drive->type == DriveType::Force && !driven->inertia.known)) continue;
+      auto driven = model.spring_drive(joint);
+      if (!driven || (!driven->acceleration() && !driven->inertia.known)) continue;
       const double inertia = driven->inertia_used;
       const double ratio = physics::damping_ratio(driven->damping, driven->stiffness, inertia);
       if (ratio >= low && ratio <= high) continue;
       const Drive& drive = *driven->drive;
       const double critical = physics::damping_for_ratio(1.0, driven->stiffness, inertia);
       const bool below = ratio < low;
-      Diagnostic& d = out.report(
-          drive.damping && drive.damping->span.valid() ? drive.damping->span : drive.stiffness->span.valid() ? drive.stiffness->span : joint.name.span,
-          fmt::format("damping ratio {} of the drive of {} is {} {} (damping {}, stiffness {}, {}): the joint {}; "
-                      "damping for ratio 1 is {}",
-                      format_number(ratio, 3), joint_label(joint), below ? "below" : "above",
-                      format_number(below ? low : high), describe_gain(drive.damping, driven->damping, damping_unit(joint)),
-                      describe_gain(drive.stiffness, driven->stiffness, stiffness_unit(joint)), driven->inertia_text(),
-                      below ? "oscillates around its target" : "moves sluggishly",
-                      describe_gain(drive.damping, critical, damping_unit(joint))));
-      if (drive.damping && drive.damping->span.valid()) {
-        d.fix = Fix{"set damping for a damping ratio of 1", Applicability::Unsafe,
-                    {replace_value(*drive.damping, critical, 4)}};
+      const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
+                      : drive.stiffness->span.valid()              ? drive.stiffness->span
+                                                                   : joint.name.span;
+      Diagnostic& d = out.report(at, fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
+                                                 format_number(ratio, 3), below ? "below" : "above",
+                                                 format_number(below ? low : high),
+                                                 below ? "oscillates around its target" : "moves sluggishly"));
+      d.note(fmt::format("For {}: dr = d / (2·sqrt(k·I)) = {} / (2·sqrt({} × {})) = {} with the guide's {}.",
+                         joint_label(joint), describe_gain(drive.damping, driven->damping, damping_unit(joint)),
+                         describe_gain(drive.stiffness, driven->stiffness, stiffness_unit(joint)),
+                         format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
+      if (!driven->acceleration()) {
+        std::string both = fmt::format("Inertias: {}.", driven->inertias_text());
+        if (driven->articulated.known)
+          both += fmt::format(" On the articulation dr = {}.",
+                              format_number(physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value), 3));
+        d.note(std::move(both));
+      }
+      if (driven->inertia_doubt.empty())
+        d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
+                           describe_gain(drive.damping, critical, damping_unit(joint))));
+      if (!driven->inertia_doubt.empty()) {
+        d.note(fmt::format("No fix is offered: {}, so a damping computed from it would be as wrong.", driven->inertia_doubt));
+      } else if (drive.damping && drive.damping->span.valid()) {
+        d.fix = Fix{fmt::format("set damping {} for a damping ratio of 1", describe_gain(drive.damping, critical, damping_unit(joint))),
+                    Applicability::Unsafe, {replace_value(*drive.damping, critical, 4)}};
       }
     }
   }

@@ -10,59 +10,103 @@
 namespace assetlint::rules {
 namespace {
 
-// PHYSICS.md §2: PhysX integrates drives implicitly. One step scales the spring/damper
-// impulse by 1 / (1 + dt·(dt·k + d)/I): once (dt·nf)² > 1 the drive delivers less
-// than half of k·Δ, and stiffer drives push *less*.
+// docs/physics.md "The drive row": PhysX solves a drive implicitly with
+// x = 1/(1 + h·(h·k + d)·r) at the solver's step h. Against a hard stop TGS holds x·k·Δ
+// and PGS (1 − (1 − x)^M)·k·Δ; against a compliant load the drive keeps its full k. The
+// verdict rests on x with the articulated inertia 1/r when known: a warning when x is below
+// `min_factor` (the drive holds less than that share of k·Δ at a contact). With the
+// articulated inertia unknown, the guide's lighter-link x is reported as an info.
 class DriveImplicitAttenuation final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    const double threshold = rule_option(info_, settings, "max_dt_nf_squared");
+    // MuJoCo integrates position actuators' springs explicitly: nothing attenuates them.
+    if (asset.format == SourceFormat::Mjcf) return;
+    const double threshold = rule_option(info_, settings, "min_factor");
+    const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
-      auto driven = spring_drive(asset, joint, settings);
-      if (!driven || (driven->drive->type == DriveType::Force && !driven->inertia.known)) continue;
-      const double inertia = driven->inertia_used;
-      const double dt = driven->rate.dt();
-      const double nf = physics::natural_frequency(driven->stiffness, inertia);
-      const double x = (dt * nf) * (dt * nf);
-      if (x <= threshold) continue;
-      const double fraction = 1.0 / (1.0 + dt * (dt * driven->stiffness + driven->damping) / inertia);
-      const Drive& drive = *driven->drive;
-      std::string message = fmt::format(
-          "implicit drive of {} delivers {}% of the spring force: (dt·nf)² = ({} s × {} rad/s)² = {} > {} at {} Hz "
-          "({}); PhysX scales each step by 1 / (1 + dt·(dt·k + d)/I) = {} with k = {}, d = {}, {}",
-          joint_label(joint), format_number(100.0 * fraction, 3), format_number(dt, 4), format_number(nf, 4),
-          format_number(x, 4), format_number(threshold), format_number(driven->rate.timesteps_per_second),
-          driven->rate.rate_origin, format_number(fraction, 3),
-          describe_gain(drive.stiffness, driven->stiffness, stiffness_unit(joint)),
-          describe_gain(drive.damping, driven->damping, damping_unit(joint)), driven->inertia_text());
-      const Quantity* force = max_force_of(joint);
-      const auto delta = target_delta(joint, settings);
-      if (delta) {
-        const double pushed = driven->stiffness * *delta * fraction;
-        message += fmt::format("; at a {}° target delta it pushes {} instead of {}", format_number(settings.gripper.target_delta_deg.value),
-                               describe(pushed, Unit::NewtonMeter), describe(driven->stiffness * *delta, Unit::NewtonMeter));
-      }
-      if (force && force->value > 0 && std::isfinite(force->value)) {
-        const double needed = force->value / (driven->stiffness * fraction);
-        const bool within = joint.lower && joint.upper ? needed <= joint.upper->value - joint.lower->value : true;
-        message += fmt::format("; max force {} needs a position error of {}{}", describe(*force),
-                               describe(needed, is_angular(joint.type) ? Unit::Degree : Unit::Meter),
-                               within ? "" : ", more than the joint's whole range: it is never reached");
-      }
-      out.report(drive.stiffness->span.valid() ? drive.stiffness->span : joint.name.span, std::move(message));
+      auto driven = model.spring_drive(joint);
+      if (!driven) continue;
+      if (!driven->acceleration() && !driven->articulated.known && !driven->inertia.known) continue;
+      const physics::DriveRow row = driven->verdict_row();
+      const double x = row.x();
+      const double share = static_hold_share(row);
+      if (share >= threshold) continue;
+      const physics::SimulationRate& rate = driven->rate;
+      const Severity severity = driven->verdict_on_articulation() || driven->acceleration() ? Severity::Warning : Severity::Info;
+      Diagnostic& d = out.report(
+          driven->drive->stiffness->span.valid() ? driven->drive->stiffness->span : joint.name.span, severity,
+          fmt::format("drive of {} holds {}% of k·Δ at a hard stop (x = {}, {}{})", short_name(joint),
+                      format_number(100.0 * share, 2), format_number(x, 2), rate.step_text(),
+                      driven->verdict_on_articulation() || driven->acceleration() ? "" : ", lighter link"));
+      d.note(factor_text(*driven, row));
+      if (!driven->verdict_on_articulation() && !driven->acceleration())
+        d.note("The articulated inertia is unknown, so this rests on the guide's lighter-link estimate, which can sit "
+               "far below what the drive row sees (and x with it); author the missing masses to judge it.");
+      d.note(fmt::format("Step: {}.", rate.describe()));
+      d.note(hold_text(*driven, row, settings));
+      d.note("Against a compliant load (gravity, an external force) the drive acts with its full k; at a stop a stiffer "
+             "drive does not push harder: x·k·Δ saturates toward Δ/(h²·r).");
     }
   }
 
  private:
+  // The share of k·Δ held at a stop (before any force cap): x under TGS, 1 − (1 − x)^M under PGS.
+  static double static_hold_share(const physics::DriveRow& row) {
+    const physics::Hold hold = physics::static_hold(row, 1.0);
+    return hold.uncapped / hold.spring;
+  }
+
+  static std::string factor_text(const DrivenJoint& driven, const physics::DriveRow& row) {
+    const Joint& joint = *driven.joint;
+    const std::string k = describe_gain(driven.drive->stiffness, driven.stiffness, stiffness_unit(joint));
+    const std::string d = describe_gain(driven.drive->damping, driven.damping, damping_unit(joint));
+    if (driven.acceleration())
+      return fmt::format("For {}: x = 1/(1 + h·(h·k + d)) = {} with k = {}, d = {}: an acceleration drive ignores the "
+                         "inertia.",
+                         joint_label(joint), format_number(row.x(), 3), k, d);
+    std::string text = fmt::format("For {}: x = 1/(1 + h·(h·k + d)·r) = {} with k = {}, d = {}, 1/r = {} {}",
+                                   joint_label(joint), format_number(row.x(), 3), k, d,
+                                   format_number(1.0 / row.response, 3), driven.inertia_unit());
+    text += driven.verdict_on_articulation() ? " (the articulation)" : " (the lighter link)";
+    if (driven.verdict_on_articulation() && driven.inertia.known)
+      text += fmt::format("; on the lighter link x = {}", format_number(driven.row(driven.inertia.value).x(), 3));
+    return text + fmt::format(". Inertias: {}.", driven.inertias_text());
+  }
+
+  static std::string hold_text(const DrivenJoint& driven, const physics::DriveRow& row, const Settings& settings) {
+    const auto delta = target_delta(*driven.joint, settings);
+    if (!delta)
+      return row.solver == physics::Solver::TGS
+                 ? "At a hard stop TGS holds x·k·Δ on average over the frame."
+                 : fmt::format("At a hard stop PGS restarts the drive impulse every frame and holds (1 − (1 − x)^{})·k·Δ.",
+                               row.iterations);
+    const physics::ForceLimit limit = force_limit_of(*driven.joint);
+    const Unit unit = is_angular(driven.joint->type) ? Unit::NewtonMeter : Unit::Newton;
+    const physics::Hold hold = physics::static_hold(row, *delta, limit);
+    const std::string formula = row.solver == physics::Solver::TGS
+                                    ? std::string("x·k·Δ")
+                                    : fmt::format("(1 − (1 − x)^{})·k·Δ (PGS restarts the drive impulse every frame; "
+                                                  "{} position + velocity iterations)",
+                                                  row.iterations, row.iterations);
+    std::string text = fmt::format("At a hard stop {}° before the target it holds {} = {} instead of k·Δ = {}",
+                                   format_number(settings.gripper.target_delta_deg.value), formula,
+                                   describe(hold.uncapped, unit), describe(hold.spring, unit));
+    if (std::isfinite(limit.max_force))
+      text += fmt::format("{} max force {} (the frame's impulse is clamped to maxForce·dt)",
+                          hold.capped ? ", capped at" : "; bounded by", describe(limit.max_force, unit));
+    return text + ".";
+  }
+
   RuleInfo info_{"drive-implicit-attenuation",
-                 "PhysX's implicit drive delivers only a fraction of the spring force at this time step",
+                 "PhysX's implicit drive row holds only a fraction x of k·Δ at a contact at the solver's step",
                  Severity::Warning,
                  false,
                  RuleOrigin::Check,
-                 {{"max_dt_nf_squared", 1.0,
-                   "report when (dt·nf)² exceeds this (1: the drive delivers less than half of k·Δ)"}}};
+                 {{"min_factor", 0.5,
+                   "report when the drive holds less than this share of k·Δ at a hard stop: x = 1/(1 + h·(h·k + d)·r) "
+                   "under TGS, 1 − (1 − x)^M under PGS"}}};
 };
 
 }  // namespace

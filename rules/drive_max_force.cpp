@@ -4,80 +4,185 @@
 
 #include "physics/gripper.h"
 #include "rules/all_rules.h"
+#include "rules/limit_placeholders.h"
 #include "rules/support.h"
 #include "util/numbers.h"
 
 namespace assetlint::rules {
 namespace {
 
-// The guide's first step: bound every drive's force by the robot's spec. A zero bound
-// makes the joint limp; a placeholder (1e6, 1e9, inf) means the drive is unbounded.
+// The guide's first step: bound every drive's force by the robot's spec. Without a spec
+// only what is certainly wrong is a warning; sentinels and placeholders are infos that
+// say what they mean to whom (PHYSICS.md §2 item 8).
 class DriveMaxForce final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    const double placeholder = rule_option(info_, settings, "placeholder_force");
     const Joint* spec = physics::spec_joint(asset, settings);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
       const bool usd = asset.format == SourceFormat::Usda;
-      const char* what = usd ? "drive maxForce" : "effort limit";
-      const OptQuantity* force = &joint.effort;
-      if (joint.drive) {
-        const bool active = (joint.drive->stiffness && joint.drive->stiffness->value > 0) ||
-                            (joint.drive->damping && joint.drive->damping->value > 0);
-        if (!active) continue;
-        if (joint.drive->max_force) force = &joint.drive->max_force;
-        if (usd && (!joint.drive->max_force || std::isinf(joint.drive->max_force->value))) {
-          out.report(joint.drive->max_force ? joint.drive->max_force->span : joint.drive->span,
-                     fmt::format("driven {} has no {} ({}): the drive can push with unbounded force; set it from "
-                                 "the robot's spec (payload, friction and lever arm)",
-                                 joint_label(joint), what, joint.drive->max_force ? "inf" : "unauthored, default inf"));
-          continue;
-        }
-      } else if (usd) {
-        continue;  // no drive: not a driven joint in USD
+      if (joint.drive && !has_active_drive(joint)) continue;
+      if (usd && !joint.drive) continue;  // no applied drive: not a driven joint in USD
+      // URDF carries no drive: a joint is driven when configuration gives it one or the
+      // spec names it; otherwise its effort is only a limit.
+      const auto required = &joint == spec ? physics::required_force(asset, settings, joint) : std::nullopt;
+      const bool driven = joint.drive || (&joint == spec && (settings.gripper.driven_joint || required));
+      Context c{{asset, settings, joint, usd, driven, out}, required ? &*required : nullptr};
+      if (usd && (!joint.drive->max_force || std::isinf(joint.drive->max_force->value))) {
+        unbounded(c);
+        continue;
       }
-      if (!*force) continue;
-      const Quantity& q = **force;
-      if (q.value == 0) {
-        out.report(q.span, fmt::format("driven {} has {} {}: the drive cannot move it", joint_label(joint), what,
-                                       describe(q)));
-      } else if (q.value >= placeholder) {
-        out.report(q.span,
-                   fmt::format("driven {} has {} {}, a placeholder (≥ {}): the drive is effectively unbounded; set "
-                               "it from the robot's spec",
-                               joint_label(joint), what, describe(q), format_number(placeholder)));
-      } else if (q.value < 0) {
-        out.report(q.span, fmt::format("driven {} has negative {} {}", joint_label(joint), what, describe(q)));
-      } else if (&joint == spec) {
-        check_spec(asset, settings, joint, q, what, out);
-      }
+      const OptQuantity& force = joint.drive && joint.drive->max_force ? joint.drive->max_force : joint.effort;
+      if (!force) continue;
+      judge(c, *force);
+      if (!usd) effort_within_friction(c, *force);
     }
   }
 
  private:
-  // The guide's derivation from the payload spec (PHYSICS.md §3): the drive must hold
-  // the payload through every joint it moves.
-  static void check_spec(const Asset& asset, const Settings& settings, const Joint& joint, const Quantity& q,
-                         const char* what, Reporter& out) {
-    const auto required = physics::required_force(asset, settings, joint);
-    if (!required || q.value >= required->required * (1 - 1e-9)) return;
-    Diagnostic& d = out.report(q.span, fmt::format("{} {} of {} is below the {} the payload spec needs: {}", what,
-                                                   describe(q), joint_label(joint),
-                                                   describe(required->required, q.unit), required->derivation));
-    if (q.span.valid())
-      d.fix = Fix{"raise the max force to the payload spec's", Applicability::Unsafe,
-                  {Edit{q.span.file, q.span.offset, q.span.length, format_number_rounded_up(q.authored_for(required->required), 3)}}};
+  struct Context : LimitCheck {
+    const physics::RequiredForce* required;
+    const char* what() const { return usd ? "maxForce" : "effort"; }
+  };
+
+  void unbounded(const Context& c) const {
+    const Drive& drive = *c.joint.drive;
+    const Span& span = drive.max_force ? drive.max_force->span : drive.span;
+    Diagnostic& d = c.out.report(span, c.required ? Severity::Warning : Severity::Info,
+                                 fmt::format("{} has no force bound (maxForce {})", c.label(),
+                                             drive.max_force ? "inf" : "unauthored"));
+    d.note(drive.max_force ? "maxForce = inf: PhysX never clamps the drive force."
+                           : "PhysicsDriveAPI's maxForce falls back to inf: PhysX never clamps the drive force.");
+    envelope_note(c, d);
+    if (c.required) {
+      spec_notes(c, d);
+    } else {
+      d.note("Without a [gripper] spec in asset-lint.toml this is reported as an info: a test scene may mean it. "
+             "With one, the bound is derived from the payload and judged.");
+    }
+  }
+
+  void judge(const Context& c, const Quantity& q) const {
+    const double placeholder = rule_option(info_, c.settings, "placeholder_force");
+    if (q.value <= 0 && !c.usd && q.span.valid()) return sentinel(c, q);
+    if (q.value == 0) {
+      Diagnostic& d = c.out.report(q.span, fmt::format("{} has maxForce 0: the drive cannot move it", c.label()));
+      d.note("PhysX clamps the drive force to maxForce; 0 leaves the joint limp.");
+      return;
+    }
+    if (q.value < 0) {
+      c.out.report(q.span, fmt::format("{} has negative {} {}", c.label(), c.what(), describe(q)));
+      return;
+    }
+    if (c.required) return against_spec(c, q);
+    const auto sharing = joints_sharing(c.asset, c.joint, &Joint::effort);
+    const bool round_repeat = !c.usd && is_power_of_ten(q.value, 3) && !sharing.empty();
+    if (q.value < placeholder && !round_repeat) return;
+    Diagnostic& d = c.out.report(q.span, Severity::Info,
+                                 fmt::format("{} {} of {} looks like a placeholder", c.what(), describe(q), c.label()));
+    if (q.value >= placeholder)
+      d.note(fmt::format("At or above placeholder_force {}, the bound is effectively no bound.", format_number(placeholder)));
+    if (round_repeat)
+      d.note(fmt::format("The same round {} is on {} other joint{} of the file: a value written for every joint, not "
+                         "a motor's rating.",
+                         format_number(q.value), sharing.size(), sharing.size() == 1 ? "" : "s"));
+    d.note("Without a [gripper] spec in asset-lint.toml this is an info. With one, the bound is judged against the "
+           "force the payload needs (a placeholder far above it makes the simulated gripper hold what the real one drops).");
+  }
+
+  // URDF <dynamics friction> is a Coulomb torque (force) opposing motion: an effort no larger
+  // than it can never start the joint. Talos's grippers write 1.0 for effort, friction,
+  // damping and velocity alike, a value typed into every field.
+  static void effort_within_friction(const Context& c, const Quantity& effort) {
+    const OptQuantity& friction = c.joint.joint_friction;
+    if (!friction || !friction->span.valid() || !(friction->value > 0) || !(effort.value > 0)) return;
+    if (effort.value > friction->value * (1 + 1e-9)) return;
+    const bool equal = effort.value >= friction->value * (1 - 1e-9);
+    Diagnostic& d = c.out.report(friction->span, Severity::Warning,
+                                 fmt::format("friction {} of {} {} its effort limit: it can never move", describe(*friction),
+                                             joint_label(c.joint), equal ? "equals" : "exceeds"));
+    d.note(effort.span, fmt::format("The effort limit is {}; consumers that apply <dynamics friction> as Coulomb friction "
+                                    "(Gazebo, through SDFormat's joint friction) need more than that to start the joint.",
+                                    describe(effort)));
+    if (equal)
+      d.note("The same number in effort and friction is usually one value typed into every field: take both from the "
+             "actuator's data sheet.");
+  }
+
+  // URDF effort ≤ 0: what it means depends on who reads the file. 0 and Gazebo's −1 are
+  // conventions; any other negative number is a slip.
+  void sentinel(const Context& c, const Quantity& q) const {
+    Diagnostic& d = report_sentinel(
+        c, q, "effort", c.required != nullptr,
+        "Isaac Sim's URDF importer reads effort ≤ 0 as no limit (it writes maxForce = FLT_MAX); urdfdom-based "
+        "tools (ROS controllers, Gazebo through SDFormat) read 0 as a zero force, and Gazebo reads −1 as no limit.",
+        "force limit");
+    if (c.required) {
+      spec_notes(c, d);
+      fix_to_spec(c, q, d);
+    }
+  }
+
+  void against_spec(const Context& c, const Quantity& q) const {
+    const double need = c.required->required;
+    const double excess = rule_option(info_, c.settings, "excess_factor");
+    const std::string unit(unit_symbol(c.required->unit));
+    if (q.value >= need * (1 - 1e-9) && q.value <= need * excess) return;
+    const bool below = q.value < need;
+    // The primary line quotes the value in model units; a scaled stage's literal goes in a note.
+    const std::string value = fmt::format("{} {}", format_number(q.value, 4), unit);
+    Diagnostic& d = c.out.report(
+        q.span, below ? fmt::format("{} {} of {} is below the {} {} the payload spec needs", c.what(), value,
+                                    joint_label(c.joint), format_number(need, 4), unit)
+                      : fmt::format("{} {} of {} is {}× the {} {} the payload spec needs", c.what(), value,
+                                    joint_label(c.joint), format_number(q.value / need, 3), format_number(need, 4), unit));
+    if (describe(q) != value) d.note(fmt::format("As written: {} {}.", c.what(), describe(q)));
+    if (!below) {
+      d.note(fmt::format("A bound more than excess_factor {}× the spec's makes the simulated gripper that much stronger "
+                         "than the real one: it holds payloads the real one drops.",
+                         format_number(excess)));
+      if (is_power_of_ten(q.value, 3)) d.note(fmt::format("A round {} is usually a placeholder.", format_number(q.value)));
+    }
+    envelope_note(c, d);
+    spec_notes(c, d);
+    fix_to_spec(c, q, d);
+  }
+
+  static void spec_notes(const Context& c, Diagnostic& d) {
+    if (!c.required) return;
+    for (const std::string& step : c.required->steps) d.note(step);
+    if (c.joint.drive && c.joint.drive->max_force && !c.joint.drive->origin.empty() && !c.joint.drive->max_force->span.valid())
+      d.note(fmt::format("The bound comes from [drives.{}] max_force ({}).", c.joint.name.text, c.joint.drive->origin));
+  }
+
+  static void envelope_note(const Context& c, Diagnostic& d) {
+    if (!c.joint.drive || !c.joint.drive->envelope) return;
+    d.note(c.joint.drive->envelope->span,
+           fmt::format("PhysxDrivePerformanceEnvelopeAPI:{} is applied: the effort limit falls with speed "
+                       "(maxForce − velocityDependentResistance·|v|, 0 at maxActuatorVelocity); maxForce is the bound "
+                       "at rest only.",
+                       c.joint.drive->instance));
+  }
+
+  static void fix_to_spec(const Context& c, const Quantity& q, Diagnostic& d) {
+    if (!q.span.valid()) return;
+    const std::string written = format_number_rounded_up(q.authored_for(c.required->required), 3);
+    d.fix = Fix{fmt::format("set the {} to the payload spec's {}", c.what(),
+                            q.scale == 1.0 ? fmt::format("{} {}", written, unit_symbol(c.required->unit))
+                                           : fmt::format("{} (stage units; {} {})", written,
+                                                         format_number(c.required->required, 4), unit_symbol(c.required->unit))),
+                Applicability::Unsafe, {Edit{q.span.file, q.span.offset, q.span.length, written}}};
   }
 
   RuleInfo info_{"drive-max-force",
-                 "A driven joint's maximum force is zero, unbounded, a placeholder, or below the payload spec",
+                 "A driven joint's maximum force is zero, unbounded, a placeholder, or far from the payload spec",
                  Severity::Warning,
                  true,
                  RuleOrigin::Check,
-                 {{"placeholder_force", 1e6, "efforts at or above this (N·m or N) are placeholders, not limits"}}};
+                 {{"placeholder_force", 1e6, "efforts at or above this (N·m or N) are placeholders, not limits"},
+                  {"excess_factor", 3.0, "with a [gripper] spec, report a bound more than this factor above the spec's"}}};
 };
 
 }  // namespace

@@ -10,126 +10,157 @@
 namespace assetlint::rules {
 namespace {
 
-// PHYSICS.md §2–3: nf = sqrt(k / I) compared with the simulation rate, as the guide
-// does (rad/s against steps per second, no 2π). Above rate × position iterations (the
-// guide's over-optimistic bound) a drive is prone to fail; far above the rate it is
-// suspicious. The fix follows the guide: k = max force / target delta, lower where
-// that still exceeds the bound, and damping for a damping ratio of 1.
+// The guide's check (docs/physics.md "The step h"): nf = sqrt(k / I) on the guide's
+// lighter-link I against rate × position iterations, which under TGS is exactly h·nf ≤ 1
+// (PhysX solves the drive at the sub-step h = dt/N); under PGS the row is built with the
+// whole frame, so the bound is the rate. Above the bound: an error. Above the rate but
+// within it: the guide's "worth trying", an info with the numbers.
 class DriveNaturalFrequency final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    const double factor = rule_option(info_, settings, "far_above_rate_factor");
+    const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
-      auto driven = spring_drive(asset, joint, settings);
+      auto driven = model.spring_drive(joint);
       if (!driven) continue;
       const Drive& drive = *driven->drive;
       const Span at = drive.stiffness->span.valid() ? drive.stiffness->span : joint.name.span;
-      if (drive.type == DriveType::Force && !driven->inertia.known) {
-        out.report(at, Severity::Info,
-                   fmt::format("natural frequency of the drive of {} not checked: no link of it or its mimics "
-                               "authors both mass and inertia{}; PhysX derives them from colliders",
-                               joint_label(joint), unknown_list(driven->inertia)));
+      if (!driven->acceleration() && !driven->inertia.known) {
+        Diagnostic& d = out.report(at, Severity::Info,
+                                   fmt::format("drive of {}: natural frequency not checked, no link mass", short_name(joint)));
+        d.note(fmt::format("No moving link of it or its mimics authors mass, inertia and centre of mass ({}); PhysX "
+                           "derives them from colliders, which a text linter cannot read.",
+                           name_list(driven->inertia.unknown_links)));
         continue;
       }
-      const double inertia = driven->inertia_used;
-      const double nf = physics::natural_frequency(driven->stiffness, inertia);
-      const physics::SimulationRate& rate = driven->rate;
-      const double bound = rate.optimistic_bound();
-      const double warn = factor * rate.timesteps_per_second;
-      if (nf <= warn) continue;
-
-      const Unit k_unit = stiffness_unit(joint), d_unit = damping_unit(joint);
-      std::string message = fmt::format(
-          "natural frequency {} rad/s of the drive of {} (stiffness {}, {}) ", format_number(nf, 4), joint_label(joint),
-          describe_gain(drive.stiffness, driven->stiffness, k_unit), driven->inertia_text());
-      const bool error = nf > bound;
-      if (error) {
-        message += fmt::format("exceeds {} = {}, the guide's over-optimistic bound", rate.describe(), format_number(bound, 4));
-      } else {
-        message += fmt::format("is {}× the {} Hz simulation rate ({}; warning above {}×, error above {} × {} = {})",
-                               format_number(nf / rate.timesteps_per_second, 3), format_number(rate.timesteps_per_second),
-                               rate.rate_origin, format_number(factor), format_number(rate.timesteps_per_second),
-                               format_number(rate.position_iterations), format_number(bound, 4));
-      }
-
-      // The guide's stiffness: full max force still reached `target delta` before the target.
-      std::optional<double> proposed;
-      std::string reason;
-      const Quantity* force = max_force_of(joint);
-      const auto delta = target_delta(joint, settings);
-      const bool force_known = force && force->value > 0 && std::isfinite(force->value);
-      if (force_known && delta && drive.type == DriveType::Force) {
-        const double k_force = force->value / *delta;
-        const double nf_force = physics::natural_frequency(k_force, inertia);
-        if (nf_force > bound) {
-          // Lowering k further would lose the max force at the target delta: the guide's
-          // other levers are armature and the simulation rate.
-          const double armature = k_force / (warn * warn) - inertia;
-          message += fmt::format(
-              "; even the guide's stiffness (max force {} / {}° target delta = {}) gives {} rad/s: add armature ≥ {} "
-              "kg·m² (natural frequency {}× the rate) or simulate at ≥ {} Hz",
-              describe(*force), format_number(settings.gripper.target_delta_deg.value),
-              describe_gain(drive.stiffness, k_force, k_unit), format_number(nf_force, 4), format_number(armature, 3),
-              format_number(factor), format_number(std::ceil(nf_force / factor), 4));
-          out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
-          continue;
-        }
-        proposed = k_force;
-        reason = fmt::format("max force {} reached {}° before the target", describe(*force),
-                             format_number(settings.gripper.target_delta_deg.value));
-      }
-      if (!proposed) {
-        // No force bound to keep: the stiffness for a natural frequency at the warning threshold.
-        proposed = physics::stiffness_for_frequency(warn, inertia);
-        reason = fmt::format("natural frequency {}× the rate{}", format_number(factor),
-                             force_known ? "" : "; no max force to keep");
-      }
-      if (*proposed >= driven->stiffness * (1 - 1e-6)) {
-        // The guide's stiffness is not lower than what the file has: stiffness is not the
-        // lever here (and a fix must never stiffen a drive).
-        const double armature = driven->stiffness / (warn * warn) - inertia;
-        message += fmt::format("; the guide's stiffness ({}) is not lower: add armature ≥ {} kg·m² (natural frequency "
-                               "{}× the rate) or simulate at ≥ {} Hz",
-                               describe_gain(drive.stiffness, *proposed, k_unit), format_number(armature, 3),
-                               format_number(factor), format_number(std::ceil(nf / factor), 4));
-        out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
-        continue;
-      }
-      const double damping = physics::damping_for_ratio(1.0, *proposed, inertia);
-      message += fmt::format("; stiffness {} → {} ({}), damping → {} for damping ratio 1 (natural frequency {} rad/s)",
-                             describe_gain(drive.stiffness, driven->stiffness, k_unit),
-                             describe_gain(drive.stiffness, *proposed, k_unit), reason,
-                             describe_gain(drive.damping, damping, d_unit),
-                             format_number(physics::natural_frequency(*proposed, inertia), 3));
-      Diagnostic& d = out.report(at, error ? Severity::Error : Severity::Warning, std::move(message));
-      std::vector<Edit> edits;
-      // Rounded down, so the written stiffness does not land back above the threshold.
-      if (drive.stiffness->span.valid())
-        edits.push_back(Edit{drive.stiffness->span.file, drive.stiffness->span.offset, drive.stiffness->span.length,
-                             format_number_at_most(drive.stiffness->authored_for(*proposed), 4)});
-      if (drive.damping && drive.damping->span.valid()) edits.push_back(replace_value(*drive.damping, damping, 4));
-      if (!edits.empty())
-        d.fix = Fix{"set stiffness and damping per the guide", Applicability::Unsafe, std::move(edits)};
+      check_drive(*driven, settings, at, out);
     }
   }
 
  private:
-  static std::string unknown_list(const physics::EffectiveInertia& inertia) {
-    if (inertia.unknown_links.empty()) return "";
-    std::string list;
-    for (const auto& name : inertia.unknown_links) list += (list.empty() ? "" : ", ") + ("'" + name + "'");
-    return " (" + list + ")";
+  static void check_drive(const DrivenJoint& driven, const Settings& settings, const Span& at, Reporter& out) {
+    const Joint& joint = *driven.joint;
+    const Drive& drive = *driven.drive;
+    const physics::SimulationRate& rate = driven.rate;
+    const double inertia = driven.inertia_used;
+    const double nf = physics::natural_frequency(driven.stiffness, inertia);
+    const double bound = rate.frequency_bound();
+    const double h_nf = rate.h() * nf;
+    if (nf <= rate.timesteps_per_second) return;
+    const Unit k_unit = stiffness_unit(joint), d_unit = damping_unit(joint);
+
+    if (nf <= bound) {
+      Diagnostic& d = out.report(
+          at, Severity::Info,
+          fmt::format("drive of {}: natural frequency {} rad/s is {}× the rate, within the {} bound {} rad/s",
+                      short_name(joint), format_number(nf, 3), format_number(nf / rate.timesteps_per_second, 3),
+                      physics::solver_name(rate.solver), format_number(bound, 4)));
+      d.note(derivation(driven, nf));
+      d.note(bound_text(rate, h_nf));
+      d.note("The guide calls a drive above the rate but within rate × iterations worth trying: watch it for "
+             "artifacts in a simple test scene, and lower the stiffness if they appear.");
+      return;
+    }
+
+    Diagnostic& d = out.report(
+        at, Severity::Error,
+        fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
+                    format_number(nf, 4), physics::solver_name(rate.solver), format_number(bound, 4),
+                    format_number(h_nf, 3)));
+    d.note(derivation(driven, nf));
+    d.note(bound_text(rate, h_nf));
+    if (rate.solver == physics::Solver::PGS)
+      d.note("Under TGS the same drive would be judged against rate × position iterations: PGS builds the drive "
+             "row with the whole frame.");
+
+    if (!driven.inertia_doubt.empty()) {
+      d.note(fmt::format("No stiffness is proposed: {}, so a value computed from it would be as wrong.",
+                         driven.inertia_doubt));
+      return;
+    }
+    // The fix: the guide's stiffness k = max force / target delta when a force spec
+    // exists, else the stiffness whose natural frequency is 1/h. Never a stiffer drive.
+    const Quantity* force = max_force_of(joint);
+    const auto delta = target_delta(joint, settings);
+    const bool force_known = force && force->value > 0 && std::isfinite(force->value);
+    double proposed = physics::stiffness_for_frequency(bound, inertia);
+    std::string reason = fmt::format("natural frequency 1/h = {} rad/s{}", format_number(bound, 4),
+                                     force_known ? "" : "; no max force to keep");
+    if (force_known && delta && !driven.acceleration()) {
+      const double k_force = force->value / *delta;
+      const double nf_force = physics::natural_frequency(k_force, inertia);
+      if (nf_force > bound) {
+        // A softer spring would lose the max force at the target delta: the guide's other
+        // levers are armature and the step.
+        const double armature = k_force / (bound * bound) - inertia;
+        d.note(fmt::format("Even the guide's stiffness, max force {} / {}° target delta = {}, gives {} rad/s: add "
+                           "armature ≥ {} {} or shorten h ({}) to ≤ {} s.",
+                           describe(*force), format_number(settings.gripper.target_delta_deg.value),
+                           describe_gain(drive.stiffness, k_force, k_unit), format_number(nf_force, 4),
+                           format_number(armature, 3), driven.inertia_unit(),
+                           rate.solver == physics::Solver::MuJoCo ? "a smaller <option timestep>"
+                                                                  : "more position iterations or a higher rate",
+                           format_number(1.0 / nf_force, 3)));
+        return;
+      }
+      proposed = k_force;
+      reason = fmt::format("max force {} reached {}° before the target", describe(*force),
+                           format_number(settings.gripper.target_delta_deg.value));
+    }
+    if (proposed >= driven.stiffness * (1 - 1e-6)) return;  // never a stiffer drive
+    const double damping = physics::damping_for_ratio(1.0, proposed, inertia);
+    d.note(fmt::format("The guide's stiffness is {} ({}), with damping {} for damping ratio 1 (natural frequency {} "
+                       "rad/s).",
+                       describe_gain(drive.stiffness, proposed, k_unit), reason,
+                       describe_gain(drive.damping, damping, d_unit),
+                       format_number(physics::natural_frequency(proposed, inertia), 3)));
+    std::vector<Edit> edits;
+    // Rounded down, so the written stiffness does not land back above the bound.
+    if (drive.stiffness->span.valid())
+      edits.push_back(Edit{drive.stiffness->span.file, drive.stiffness->span.offset, drive.stiffness->span.length,
+                           format_number_at_most(drive.stiffness->authored_for(proposed), 4)});
+    if (drive.damping && drive.damping->span.valid()) edits.push_back(replace_value(*drive.damping, damping, 4));
+    if (!edits.empty())
+      d.fix = Fix{fmt::format("set stiffness {} and damping {}", describe_gain(drive.stiffness, proposed, k_unit),
+                              describe_gain(drive.damping, damping, d_unit)),
+                  Applicability::Unsafe, std::move(edits)};
+  }
+
+  static std::string derivation(const DrivenJoint& driven, double nf) {
+    if (driven.acceleration())
+      return fmt::format("For {}: nf = sqrt(k) = sqrt({}) = {} rad/s: an acceleration drive acts as if I = 1.",
+                         joint_label(*driven.joint), describe_gain(driven.drive->stiffness, driven.stiffness, stiffness_unit(*driven.joint)),
+                         format_number(nf, 4));
+    std::string text = fmt::format(
+        "For {}: nf = sqrt(k / I) = sqrt({} / {} {}) = {} rad/s on the guide's lighter-link I; inertias: {}.",
+        joint_label(*driven.joint), describe_gain(driven.drive->stiffness, driven.stiffness, stiffness_unit(*driven.joint)),
+        format_number(driven.inertia_used, 3), driven.inertia_unit(), format_number(nf, 4), driven.inertias_text());
+    if (driven.articulated.known)
+      text += fmt::format(" On the articulation nf = {} rad/s.",
+                          format_number(physics::natural_frequency(driven.stiffness, driven.articulated.value), 4));
+    return text;
+  }
+
+  static std::string bound_text(const physics::SimulationRate& rate, double h_nf) {
+    if (rate.solver == physics::Solver::TGS)
+      return fmt::format("The guide's bound is nf ≤ rate × position iterations = {} rad/s, i.e. h·nf ≤ 1 at {}; here "
+                         "h·nf = {}.",
+                         format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));
+    if (rate.solver == physics::Solver::MuJoCo)
+      return fmt::format("MuJoCo integrates a position actuator's spring explicitly once per timestep; the guide's bound "
+                         "is nf ≤ 1/timestep = {} rad/s, i.e. h·nf ≤ 1 at {}; here h·nf = {}.",
+                         format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));
+    return fmt::format("The bound is nf ≤ rate = {} rad/s, i.e. h·nf ≤ 1 at {}; here h·nf = {}.",
+                       format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));
   }
 
   RuleInfo info_{"drive-natural-frequency",
-                 "A drive's natural frequency sqrt(k/I) is far above what the simulation rate can resolve",
-                 Severity::Warning,
+                 "A drive's natural frequency sqrt(k/I) exceeds what the solver's step resolves (h·nf > 1)",
+                 Severity::Error,
                  true,
                  RuleOrigin::Check,
-                 {{"far_above_rate_factor", 20.0,
-                   "warn when the natural frequency (rad/s) exceeds this multiple of the simulation rate (steps/s)"}}};
+                 {}};
 };
 
 }  // namespace

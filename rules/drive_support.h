@@ -1,12 +1,14 @@
 #pragma once
-// What the drive rules share: which joints are driven, their inertia and the
-// simulation rate they are judged against.
+// What the drive rules share: which joints are driven, the two inertias a drive is judged
+// on, the solver step and PhysX's drive row (docs/physics.md).
 #include <optional>
 #include <string>
 
 #include "engine/settings.h"
 #include "model/asset.h"
+#include "physics/articulation.h"
 #include "physics/drive.h"
+#include "physics/drive_row.h"
 
 namespace assetlint::rules {
 
@@ -15,17 +17,53 @@ struct DrivenJoint {
   const Drive* drive = nullptr;
   double stiffness = 0;  // model units
   double damping = 0;    // model units (unauthored: 0, USD's default)
-  physics::EffectiveInertia inertia;
-  double inertia_used = 0;  // I of the formulas: 1 for acceleration drives
+  physics::EffectiveInertia inertia;         // the guide's lighter-link estimate (+ armature)
+  physics::ArticulatedInertia articulated;   // 1/r, what PhysX's row sees (armature included)
+  // Why the lighter link's tensor cannot be trusted (a placeholder, a radius of gyration that
+  // does not fit): the verdict still stands, but no fix is computed from it. Empty when trusted.
+  std::string inertia_doubt;
+  double inertia_used = 0;  // I of the guide's formulas: the lighter link, 1 for acceleration drives
   physics::SimulationRate rate;
-  std::string inertia_text() const;  // how I was obtained, for messages
+
+  bool acceleration() const { return drive->type == DriveType::Acceleration; }
+  // The drive row on an inertia (acceleration drives: the inertia only scales the force).
+  physics::DriveRow row(double inertia) const;
+  // The row on the articulated inertia when known, else on the lighter link.
+  physics::DriveRow verdict_row() const;
+  bool verdict_on_articulation() const { return articulated.known; }
+  // "lighter link 3.37e-6 kg·m² ('left_inner_finger' about 'left_inner_finger_joint'), the guide's
+  // estimate; articulation 8.57e-5 kg·m²" or "…; articulation: unknown (unauthored mass: base_link, …)"
+  std::string inertias_text() const;
+  std::string inertia_text() const;  // the guide's I for messages: "I = 3.37e-6 kg·m² (…)" / "I = 1 (acceleration drive)"
+  const char* inertia_unit() const;  // "kg·m²" or "kg"
 };
 
-// A joint with an applied spring drive (stiffness > 0), not a mimic, single DOF.
-std::optional<DrivenJoint> spring_drive(const Asset& asset, const Joint& joint, const Settings& settings);
+// Everything the drive rules need from one asset, built once per rule run (O(n)).
+class DriveModel {
+ public:
+  DriveModel(const Asset& asset, const Settings& settings);
+  // A joint with an applied spring drive (stiffness > 0), not a mimic, single DOF.
+  std::optional<DrivenJoint> spring_drive(const Joint& joint) const;
+  const physics::Articulation& articulation() const { return articulation_; }
+  const physics::SimulationRate& rate() const { return rate_; }
+
+ private:
+  const Asset& asset_;
+  physics::Articulation articulation_;
+  physics::SimulationRate rate_;
+};
+
+// "'finger_joint'": the joint's name without its USD prim path, for short primary messages.
+std::string short_name(const Joint& joint);
+
+// "'base_link', 'left_outer_knuckle'" (at most `limit` names, then "and N more").
+std::string name_list(const std::vector<std::string>& names, std::size_t limit = 4);
 
 // The joint's force bound: the drive's maxForce, else the URDF effort limit.
 const Quantity* max_force_of(const Joint& joint);
+// The force limit PhysX applies: maxForce with the forces flag (omni.physx sets it for USD;
+// Isaac's URDF importer writes USD), unlimited when none is known.
+physics::ForceLimit force_limit_of(const Joint& joint);
 
 // Unit of a drive gain as PhysX reads it, for values the file does not hold.
 Unit stiffness_unit(const Joint& joint);

@@ -1,5 +1,8 @@
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <unordered_map>
+
 #include "model/topology.h"
 #include "physics/inertia.h"
 #include "rules/all_rules.h"
@@ -13,72 +16,272 @@ std::string moments_text(const Eigen::Vector3d& m) {
   return fmt::format("[{}, {}, {}] kg·m²", format_number(m[0], 4), format_number(m[1], 4), format_number(m[2], 4));
 }
 
+// Where a link sits in the simulated model decides how much a bad tensor matters.
+enum class Role {
+  BodyStart,  // the child of a movable joint: its tensor is the body's own
+  Welded,     // welded by fixed joints to a body or to the root: merged into that body
+  Root,       // a link no joint moves and no joint welds to anything (the base)
+};
+
+struct Placement {
+  Role role = Role::Root;
+  const Joint* joint = nullptr;  // BodyStart: the movable joint; Welded: the fixed joint
+  bool moves = false;            // part of a body moved by a joint (not welded to the root)
+  bool welded_inertia = false;   // BodyStart: a link welded to it carries a non-zero tensor
+};
+
+std::unordered_map<const Link*, Placement> placements(const Asset& asset, const std::vector<RigidBody>& bodies) {
+  std::unordered_map<const Link*, Placement> out;
+  for (const Joint& joint : asset.joints)
+    if (const Link* child = asset.find_link(joint.child.text))
+      out[child] = {joint.type == JointType::Fixed ? Role::Welded : Role::BodyStart, &joint};
+  for (const RigidBody& body : bodies) {
+    if (body.links.empty()) continue;
+    Placement& start = out[body.links.front()] = {Role::BodyStart, body.joint, true};
+    for (const Link* link : body.links) {
+      out[link].moves = true;
+      if (link != body.links.front() && link->inertial && link->inertial->inertia_authored &&
+          !link->inertial->inertia.isZero(0.0))
+        start.welded_inertia = true;
+    }
+  }
+  return out;
+}
+
+// A USD prim path's last element keeps the primary message short; the span says where.
+std::string short_link_name(const Asset& asset, const Link& link) {
+  const std::string& name = link.name.text;
+  const auto slash = name.find_last_of('/');
+  return asset.format == SourceFormat::Usda && slash != std::string::npos ? name.substr(slash + 1) : name;
+}
+
 class InertiaInvalid final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    const double tolerance = rule_option(info_, settings, "triangle_tolerance");
     const bool urdf = asset.format == SourceFormat::Urdf;
+    const std::vector<RigidBody> bodies = moving_bodies(asset);
+    if (urdf) check_bodies(bodies, out);
+    const auto where = placements(asset, bodies);
+    for (const Link& link : asset.links) {
+      const auto found = where.find(&link);
+      check_link(link, found == where.end() ? Placement{} : found->second, settings, out);
+    }
+    const auto equal = report_mass_equals_inertia(asset, out);
+    report_gyration(asset, where, equal, out);
+  }
 
-    for (const RigidBody& body : moving_bodies(asset)) {
+ private:
+  // Mass and every principal moment typed as the same number (Drake's Atlas Robotiq 3F:
+  // 1e-5 kg and 1e-5 kg·m² on 21 four-bar links): a placeholder, one info per file. Its
+  // radius of gyration √(I/m) = 1 m is far larger than any finger link.
+  static std::vector<const Link*> report_mass_equals_inertia(const Asset& asset, Reporter& out) {
+    std::vector<const Link*> found;
+    for (const Link& link : asset.links) {
+      if (!link.inertial || !link.inertial->mass_authored || !link.inertial->inertia_authored) continue;
+      const Inertial& in = *link.inertial;
+      const double m = in.mass.value;
+      if (m <= 0 || m >= 1.0) continue;
+      if (in.inertia(0, 0) == m && in.inertia(1, 1) == m && in.inertia(2, 2) == m) found.push_back(&link);
+    }
+    if (found.empty()) return found;
+    const Inertial& first = *found.front()->inertial;
+    Diagnostic& d = out.report(first.inertia_span, Severity::Info,
+                               found.size() == 1
+                                   ? fmt::format("link '{}' has mass {} kg and inertia {} kg·m²: placeholder values",
+                                                 found.front()->name.text, format_number(first.mass.value),
+                                                 format_number(first.mass.value))
+                                   : fmt::format("{} links have a mass equal to each moment of inertia (first: {}): "
+                                                 "placeholder values",
+                                                 found.size(), format_number(first.mass.value)));
+    d.note(fmt::format("The radius of gyration √(I/m) is then 1 m whatever the mass, far larger than the link; every "
+                       "natural-frequency estimate √(k/I) that uses it is wrong."));
+    if (found.size() > 1) {
+      std::string names;
+      for (std::size_t i = 0; i < found.size() && i < 5; ++i) names += fmt::format("{}'{}'", i ? ", " : "", found[i]->name.text);
+      d.note(fmt::format("They include {}{}.", names, found.size() > 5 ? fmt::format(" and {} more", found.size() - 5) : ""));
+    }
+    d.note("Take mass and inertia from CAD, or leave the links out of tuning until they are measured.");
+    return found;
+  }
+
+  // A tensor too large (or too small) for the link that carries it: 0.02 kg fingers with
+  // 0.01 kg·m² (Rethink's electric gripper), every Minitaur link. One warning per file at the
+  // worst link; the others are notes. Only a body's own link is judged: a welded frame's tensor
+  // is merged into a heavier body. Placeholders already reported above are not repeated.
+  static void report_gyration(const Asset& asset, const std::unordered_map<const Link*, Placement>& where,
+                              const std::vector<const Link*>& already, Reporter& out) {
+    struct Found {
+      const Link* link;
+      physics::Gyration g;
+      double excess;  // how far outside its bound, as a factor
+    };
+    std::vector<Found> found;
+    for (const Link& link : asset.links) {
+      const auto placed = where.find(&link);
+      if (placed == where.end() || placed->second.role != Role::BodyStart || !link.inertial) continue;
+      if (physics::pasted_tensor(link.inertial->inertia) ||
+          std::find(already.begin(), already.end(), &link) != already.end())
+        continue;
+      const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link));
+      if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
+      const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;
+      found.push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest});
+    }
+    if (found.empty()) return;
+    std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.excess > b.excess; });
+    const Found& worst = found.front();
+    const Inertial& in = *worst.link->inertial;
+    const bool large = worst.g.verdict == physics::Gyration::Verdict::TooLarge;
+    const std::string more =
+        found.size() > 1 ? fmt::format(" (and {} more link{})", found.size() - 1, found.size() == 2 ? "" : "s") : "";
+    Diagnostic& d = out.report(
+        in.inertia_span, Severity::Warning,
+        fmt::format("link '{}': radius of gyration {} m is {} than the link could be{}", short_link_name(asset, *worst.link),
+                    format_number(worst.g.largest, 3), large ? "larger" : "smaller", more));
+    d.note(fmt::format("√(I/m) = √({} kg·m² / {} kg) = {} m, {} {}.",
+                       format_number(worst.g.largest * worst.g.largest * in.mass.value, 4),
+                       format_number(in.mass.value, 4), format_number(worst.g.largest, 3),
+                       large ? "above" : "under", worst.g.bound_text()));
+    if (large)
+      d.note("All of a body's mass lies within its extent R of the COM, so √(I/m) ≤ R: this tensor (or this mass) "
+             "is not the part's, often a template's 0.01 or 0.001 kg·m² left on a light link.");
+    else
+      d.note("A link this heavy with so small a tensor is a point mass typed in: its rotation reacts to torques as if "
+             "it weighed nothing.");
+    d.note("Natural frequencies √(k/I) and damping ratios computed on it are wrong; the drive rules offer no fix from it.");
+    for (std::size_t i = 1; i < found.size() && i <= 5; ++i)
+      d.note(found[i].link->inertial->inertia_span,
+             fmt::format("Also '{}': √(I/m) = {} m, bound {} m.", found[i].link->name.text,
+                         format_number(found[i].g.largest, 3),
+                         format_number(found[i].g.verdict == physics::Gyration::Verdict::TooLarge ? found[i].g.bound
+                                                                                                   : physics::kGyrationMinRadius,
+                                       3)));
+    if (found.size() > 6) d.note(fmt::format("And {} more links like these.", found.size() - 6));
+    d.note("Take mass and inertia from CAD (or compute them from the link's geometry).");
+  }
+
+  // A body that moves needs mass: without an inertial the importer invents one.
+  static void check_bodies(const std::vector<RigidBody>& bodies, Reporter& out) {
+    for (const RigidBody& body : bodies) {
       if (body.links.empty()) continue;  // undefined child: structure-undefined-link reports it
       const Link& child = *body.links.front();
-      bool any_inertial = false, any_negative = false;
+      const Link* first_inertial = nullptr;
+      bool any_negative = false;
       double total_mass = 0.0;
       for (const Link* link : body.links) {
         if (!link->inertial) continue;
-        any_inertial = true;
+        if (!first_inertial) first_inertial = link;
         if (!link->inertial->mass_authored) continue;
         if (link->inertial->mass.value > 0) total_mass += link->inertial->mass.value;
         any_negative = any_negative || link->inertial->mass.value < 0;
       }
-      if (any_negative) continue;  // reported below, once, as a negative mass
-      if (!any_inertial && urdf) {
-        out.report(child.name.span,
-                   fmt::format("link '{}' moves (child of {}) but has no <inertial>: the simulator has to invent its "
-                               "mass and inertia",
-                               child.name.text, joint_label(*body.joint)));
-      } else if (any_inertial && total_mass <= 0 && urdf) {
-        const Link& first = **std::find_if(body.links.begin(), body.links.end(), [](const Link* l) { return l->inertial.has_value(); });
-        out.report(first.inertial->mass.span,
-                   fmt::format("link '{}' moves (child of {}) but its mass is {} kg: a moving body needs a positive mass",
-                               first.name.text, joint_label(*body.joint), format_number(first.inertial->mass.value)));
-      }
-    }
-
-    for (const Link& link : asset.links) {
-      if (!link.inertial || !link.inertial->mass_authored) continue;
-      const Inertial& inertial = *link.inertial;
-      if (inertial.mass.value < 0) {
-        out.report(inertial.mass.span,
-                   fmt::format("link '{}' has negative mass {} kg", link.name.text, format_number(inertial.mass.value)));
-        continue;
-      }
-      if (inertial.mass.value == 0 || !inertial.inertia_authored) continue;
-      const Eigen::Vector3d moments = physics::principal_moments(inertial.inertia);
-      if (moments[0] <= 0) {
-        out.report(inertial.inertia_span,
-                   fmt::format("inertia of link '{}' (mass {} kg) is not positive definite: principal moments {}",
-                               link.name.text, format_number(inertial.mass.value), moments_text(moments)));
-      } else if (moments[2] > (moments[0] + moments[1]) * (1 + tolerance)) {
-        out.report(inertial.inertia_span,
-                   fmt::format("inertia of link '{}' violates the triangle inequality: principal moments {}, and "
-                               "{} > {} + {}; no rigid body has such a tensor",
-                               link.name.text, moments_text(moments), format_number(moments[2], 4),
-                               format_number(moments[0], 4), format_number(moments[1], 4)));
+      if (any_negative) continue;  // reported once, as a negative mass
+      if (!first_inertial) {
+        out.report(child.name.span, fmt::format("link '{}' moves but has no <inertial>", child.name.text))
+            .note(body.joint->name.span, fmt::format("It is the child of {}; no link welded to it has an <inertial> "
+                                                     "either.",
+                                                     joint_label(*body.joint)))
+            .note("Without one, the importer or simulator invents a mass and inertia unrelated to the part.");
+      } else if (total_mass <= 0) {
+        out.report(first_inertial->inertial->mass.span,
+                   fmt::format("link '{}' moves but its mass is {} kg", first_inertial->name.text,
+                               format_number(first_inertial->inertial->mass.value)))
+            .note(body.joint->name.span,
+                  fmt::format("It is part of the body moved by {}, and no link of that body has a positive mass.",
+                              joint_label(*body.joint)));
       }
     }
   }
 
- private:
+  void check_link(const Link& link, const Placement& placement, const Settings& settings, Reporter& out) const {
+    if (!link.inertial || !link.inertial->mass_authored) return;
+    const Inertial& inertial = *link.inertial;
+    const double mass = inertial.mass.value;
+    if (mass < 0) {
+      out.report(inertial.mass.span, fmt::format("link '{}' has negative mass {} kg", link.name.text, format_number(mass)));
+      return;
+    }
+    const double dummy_mass = rule_option(info_, settings, "dummy_mass");
+    if (mass == 0 || !inertial.inertia_authored) return;
+    if (placement.role == Role::Root && mass <= dummy_mass) return;  // a dummy root is not a body
+
+    const Eigen::Vector3d moments = physics::principal_moments(inertial.inertia);
+    const double scale = std::max(std::abs(moments[0]), std::abs(moments[2]));
+    if (scale == 0) {
+      // A point mass: welded to another body it only adds m·d² to that body (PhysX and the
+      // URDF importers merge welded links), so only a body of its own is a problem.
+      if (placement.role == Role::BodyStart && !placement.welded_inertia) report_point_mass(link, placement, out);
+      return;
+    }
+    const double relative = rule_option(info_, settings, "definiteness_tolerance");
+    const double triangle = rule_option(info_, settings, "triangle_tolerance");
+    // Welded to the root, the link moves only when the base floats: risky, not certainly wrong.
+    const Severity impossible = placement.role == Role::Welded && !placement.moves ? Severity::Warning : Severity::Error;
+    if (moments[0] < -relative * scale) {
+      Diagnostic& d = out.report(inertial.inertia_span, impossible,
+                                 fmt::format("inertia of link '{}' has a negative principal moment {} kg·m²",
+                                             link.name.text, format_number(moments[0], 4)));
+      d.note(fmt::format("Principal moments {} (mass {} kg); every moment of a real body is positive.",
+                         moments_text(moments), format_number(mass)));
+      d.note("The usual cause is a product of inertia with the wrong sign, or products copied from another frame.");
+    } else if (moments[0] <= relative * scale) {
+      report_singular(link, placement, moments, relative, out);
+    } else if (moments[2] > (moments[0] + moments[1]) * (1 + triangle)) {
+      out.report(inertial.inertia_span, impossible,
+                 fmt::format("inertia of link '{}' violates the triangle inequality", link.name.text))
+          .note(fmt::format("Principal moments {}: {} > {} + {}.", moments_text(moments), format_number(moments[2], 4),
+                            format_number(moments[0], 4), format_number(moments[1], 4)))
+          .note("No distribution of positive mass has a largest moment above the sum of the other two.");
+    }
+  }
+
+  static void report_point_mass(const Link& link, const Placement& placement, Reporter& out) {
+    const Inertial& inertial = *link.inertial;
+    out.report(inertial.inertia_span, Severity::Warning,
+               fmt::format("link '{}' moves with mass {} kg but a zero inertia tensor", link.name.text,
+                           format_number(inertial.mass.value)))
+        .note(placement.joint->name.span,
+              fmt::format("It is the child of {}, a body of its own, and nothing welded to it carries inertia.",
+                          joint_label(*placement.joint)))
+        .note("PhysX reads a zero moment as infinite inertia about that axis (the rotation is locked); other "
+              "simulators reject the body or substitute a default.");
+  }
+
+  static void report_singular(const Link& link, const Placement& placement, const Eigen::Vector3d& moments,
+                              double relative, Reporter& out) {
+    const Inertial& inertial = *link.inertial;
+    const bool pasted = physics::pasted_tensor(inertial.inertia);
+    // Welded to another body a rank-deficient tensor is merged harmlessly; say so only when
+    // it is the tell-tale pasted value.
+    if (placement.role != Role::BodyStart && !pasted) return;
+    const Severity severity = placement.role == Role::BodyStart ? Severity::Warning : Severity::Info;
+    Diagnostic& d = out.report(
+        inertial.inertia_span, severity,
+        pasted ? fmt::format("inertia of link '{}' has all six entries equal to {}: a pasted placeholder",
+                             link.name.text, format_number(inertial.inertia(0, 0), 4))
+               : fmt::format("inertia of link '{}' is singular: smallest principal moment {} kg·m²", link.name.text,
+                             format_number(moments[0], 4)));
+    d.note(fmt::format("Principal moments {}; the smallest is within {} of zero relative to the largest, so the "
+                       "body has no inertia about one axis.",
+                       moments_text(moments), format_number(relative)));
+    if (pasted) d.note("A tensor with ixx = iyy = izz = ixy = ixz = iyz has rank one: one value typed into every field.");
+    if (placement.role != Role::BodyStart)
+      d.note(placement.joint ? placement.joint->name.span : link.name.span,
+             "The link is welded by fixed joints, so the simulator merges it into another body; harmless there.");
+  }
+
   RuleInfo info_{"inertia-invalid",
                  "A moving link without mass or inertia, or with an inertia tensor no rigid body can have",
                  Severity::Error,
                  false,
                  RuleOrigin::Check,
                  {{"triangle_tolerance", 1e-6,
-                   "relative slack allowed on the triangle inequality I_max ≤ (I_a + I_b)·(1 + tolerance)"}}};
+                   "relative slack allowed on the triangle inequality I_max ≤ (I_a + I_b)·(1 + tolerance)"},
+                  {"definiteness_tolerance", 1e-9,
+                   "a principal moment within this fraction of the largest one counts as zero, not negative"},
+                  {"dummy_mass", 1e-4, "a root link this light (kg) is a frame, not a body: its tensor is not checked"}}};
 };
 
 }  // namespace

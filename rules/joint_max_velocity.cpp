@@ -4,6 +4,7 @@
 
 #include "physics/gripper.h"
 #include "rules/all_rules.h"
+#include "rules/limit_placeholders.h"
 #include "rules/support.h"
 #include "util/numbers.h"
 
@@ -11,56 +12,133 @@ namespace assetlint::rules {
 namespace {
 
 // The guide's second step: bound the driven joint's velocity by the spec, ω = joint
-// range / (stroke per finger / finger speed). Unset (USD default 1e6 deg/s) means a
-// gripper that can close in microseconds.
+// range / (stroke per finger / finger speed). Besides the spec: what a 0, a sentinel or
+// a missing value means to PhysX and to the importers (PHYSICS.md §2 item 8).
 class JointMaxVelocity final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    const double tolerance = rule_option(info_, settings, "tolerance_factor");
+    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
     const Joint* spec = physics::spec_joint(asset, settings);
+    const bool usd = asset.format == SourceFormat::Usda;
+    bool placeholder_reported = false;
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
-      const bool driven = joint.drive && ((joint.drive->stiffness && joint.drive->stiffness->value > 0) ||
-                                          (joint.drive->damping && joint.drive->damping->value > 0));
       const auto wanted = &joint == spec ? physics::required_velocity(settings, joint) : std::nullopt;
-      const Unit unit = is_angular(joint.type) ? Unit::RadianPerSecond : Unit::MeterPerSecond;
-      const bool missing = !joint.velocity || (joint.velocity->span.valid() && joint.velocity->value == 0);
-      if (missing) {
-        if (!driven && !wanted) continue;
-        const bool usd = asset.format == SourceFormat::Usda;
-        std::string message = fmt::format(
-            "driven {} has no max joint velocity{}: nothing bounds how fast the drive can move it", joint_label(joint),
-            joint.velocity ? " (0: unbounded for most importers)" : usd ? " (USD default 1e6 deg/s)" : "");
-        if (wanted) message += fmt::format("; the spec gives {} ({})", describe(wanted->velocity, usd ? Unit::DegreePerSecond : unit), wanted->derivation);
-        Diagnostic& d = out.report(joint.velocity ? joint.velocity->span : joint.name.span, std::move(message));
-        if (wanted && joint.velocity && joint.velocity->span.valid())
-          d.fix = Fix{"set the max joint velocity from the spec", Applicability::Unsafe,
-                      {replace_value(*joint.velocity, wanted->velocity, 4)}};
-        continue;
-      }
-      if (!wanted || !joint.velocity->span.valid()) continue;
-      const double ratio = joint.velocity->value / wanted->velocity;
-      if (ratio <= tolerance && ratio >= 1.0 / tolerance) continue;
-      Diagnostic& d = out.report(
-          joint.velocity->span,
-          fmt::format("max joint velocity {} of {} is {}× the spec's {} ({}; tolerance {}×)", describe(*joint.velocity),
-                      joint_label(joint), format_number(ratio, 3), describe(wanted->velocity, joint.velocity->unit),
-                      wanted->derivation, format_number(tolerance)));
-      d.fix = Fix{"set the max joint velocity from the spec", Applicability::Unsafe,
-                  {replace_value(*joint.velocity, wanted->velocity, 4)}};
+      const bool driven = has_active_drive(joint) || (&joint == spec && (settings.gripper.driven_joint || wanted));
+      const Context c{{asset, settings, joint, usd, driven, out}, wanted ? &*wanted : nullptr};
+      const OptQuantity& v = joint.velocity;
+      if (v && v->span.valid() && v->value == 0 && usd) frozen(c, *v);
+      else if (v && v->span.valid() && v->value <= 0 && !usd) sentinel(c, *v);
+      else if (!v || !v->span.valid()) unset(c);
+      else if (wanted) against_spec(c, *v);
+      else if (!placeholder_reported) placeholder_reported = placeholder(c, *v);
     }
   }
 
  private:
-  RuleInfo info_{"joint-max-velocity",
-                 "The driven joint's max velocity is unset, or far from what the gripper spec gives",
-                 Severity::Warning,
-                 true,
-                 RuleOrigin::Check,
-                 {{"tolerance_factor", 2.0, "report a velocity more than this factor above or below the spec's"}}};
+  struct Context : LimitCheck {
+    const physics::RequiredVelocity* wanted;
+    // The unit the file writes this joint's velocity in: a prismatic joint's is a distance per second.
+    Unit file_unit() const {
+      if (!is_angular(joint.type)) return Unit::MeterPerSecond;
+      return usd ? Unit::DegreePerSecond : Unit::RadianPerSecond;
+    }
+  };
+
+  // USD: PhysX clamps |v| to the value every iteration; 0 is not "no limit".
+  static void frozen(const Context& c, const Quantity& v) {
+    Diagnostic& d = c.out.report(v.span, Severity::Error, fmt::format("max joint velocity 0 freezes {}", c.label()));
+    d.note("PhysX clamps the joint's speed to maxJointVelocity in every solver iteration: 0 holds it still. USD has no "
+           "'unbounded' sentinel; leave the attribute unauthored (or write the spec's value) instead.");
+    spec_fix(c, v, d);
+  }
+
+  // URDF velocity ≤ 0: what it means depends on who reads the file. 0 and Gazebo's −1 are
+  // conventions; any other negative number is a slip.
+  static void sentinel(const Context& c, const Quantity& v) {
+    Diagnostic& d = report_sentinel(
+        c, v, "velocity", c.wanted != nullptr,
+        "Isaac Sim's URDF importer reads velocity ≤ 0 as no limit (it writes no max joint velocity); urdfdom-based "
+        "tools (ROS controllers, Gazebo through SDFormat) read 0 as a joint that may not move, and Gazebo reads −1 "
+        "as no limit.",
+        "speed limit");
+    if (c.wanted) d.note(fmt::format("The spec gives {}: {}.", describe(c.wanted->velocity, c.file_unit()), c.wanted->derivation));
+    spec_fix(c, v, d);
+  }
+
+  static void unset(const Context& c) {
+    if (!c.driven) return;
+    const Joint& joint = c.joint;
+    Diagnostic& d = c.out.report(joint.name.span, c.wanted ? Severity::Warning : Severity::Info,
+                                 fmt::format("{} has no max joint velocity", c.label()));
+    if (c.usd)
+      d.note(fmt::format("Unauthored, omni.physx sets no limit (FLT_MAX) when PhysxJointAPI is not applied and the "
+                         "schema's fallback 1e6 {} when it is: nothing bounds how fast the drive moves the joint.",
+                         is_angular(joint.type) ? "deg/s" : "distance units/s"));
+    else
+      d.note("Nothing bounds how fast the drive moves the joint.");
+    if (c.wanted) {
+      d.note(fmt::format("The spec gives {}: {}.", describe(c.wanted->velocity, c.file_unit()), c.wanted->derivation));
+      if (c.usd && is_angular(joint.type))
+        d.note(fmt::format("Add `float physxJoint:maxJointVelocity = {}` with PhysxJointAPI applied.",
+                           format_number(from_model_units(c.wanted->velocity, c.file_unit()), 4)));
+    } else {
+      d.note("Without a [gripper] spec in asset-lint.toml this is an info (test scenes often mean it).");
+    }
+  }
+
+  static void against_spec(const Context& c, const Quantity& v) {
+    const double tolerance = rule_option(info_static(), c.settings, "tolerance_factor");
+    const double ratio = v.value / c.wanted->velocity;
+    if (ratio <= tolerance && ratio >= 1.0 / tolerance) return;
+    Diagnostic& d = c.out.report(v.span, fmt::format("max joint velocity of {} is {}× what the spec gives",
+                                                     joint_label(c.joint), format_number(ratio, 3)));
+    d.note(fmt::format("Authored {}; the spec gives {}.", describe(v), describe(c.wanted->velocity, v.unit)));
+    d.note(fmt::format("The spec: {}.", c.wanted->derivation));
+    d.note(fmt::format("Reported beyond tolerance_factor {}× either way.", format_number(tolerance)));
+    const auto sharing = joints_sharing(c.asset, c.joint, &Joint::velocity);
+    if (!c.usd && is_power_of_ten(v.value, 2) && !sharing.empty())
+      d.note(fmt::format("The same round {} is on {} other joint{}: a placeholder.", format_number(v.authored),
+                         sharing.size(), sharing.size() == 1 ? "" : "s"));
+    spec_fix(c, v, d);
+  }
+
+  // URDF: velocity="100" on every joint is a value nobody measured. Once per file.
+  static bool placeholder(const Context& c, const Quantity& v) {
+    if (c.usd || !is_power_of_ten(v.value, 2)) return false;
+    const auto sharing = joints_sharing(c.asset, c.joint, &Joint::velocity);
+    if (sharing.empty() || sharing.size() + 1 < movable_joint_count(c.asset)) return false;
+    Diagnostic& d = c.out.report(v.span, Severity::Info,
+                                 fmt::format("velocity {} on every joint ({}) looks like a placeholder", describe(v),
+                                             sharing.size() + 1));
+    d.note("The same round value on every movable joint is not a motor's rating; this finding is made once per file.");
+    d.note("With a [gripper] spec in asset-lint.toml, the spec's joint is judged against the speed the spec gives.");
+    return true;
+  }
+
+  static void spec_fix(const Context& c, const Quantity& v, Diagnostic& d) {
+    if (!c.wanted || !v.span.valid()) return;
+    d.fix = Fix{fmt::format("set the max joint velocity to the spec's {}", describe_written(v, c.wanted->velocity)),
+                Applicability::Unsafe,
+                {replace_value(v, c.wanted->velocity, 4)}};
+  }
+
+  static const RuleInfo& info_static();
+  const RuleInfo& info_ = info_static();
 };
+
+const RuleInfo& JointMaxVelocity::info_static() {
+  static const RuleInfo info{"joint-max-velocity",
+                             "A max joint velocity that freezes the joint, is a sentinel or placeholder, is unset on a "
+                             "driven joint, or is far from the gripper spec",
+                             Severity::Warning,
+                             true,
+                             RuleOrigin::Check,
+                             {{"tolerance_factor", 2.0, "report a velocity more than this factor above or below the spec's"}}};
+  return info;
+}
 
 }  // namespace
 

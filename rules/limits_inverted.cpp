@@ -16,8 +16,9 @@ class LimitsInverted final : public Rule {
       if (!joint.lower || !joint.upper || joint.lower->value <= joint.upper->value) continue;
       Diagnostic& d = out.report(
           joint.lower->span.valid() ? joint.lower->span : joint.limit_span,
-          fmt::format("{} has lower limit {} above upper limit {}: the joint has no valid position", joint_label(joint),
-                      describe(*joint.lower), describe(*joint.upper)));
+          fmt::format("{} has lower limit {} above upper limit {}", joint_label(joint), describe(*joint.lower),
+                      describe(*joint.upper)));
+      d.note("The joint has no valid position: every pose violates one of its limits.");
       if (joint.lower->span.valid() && joint.upper->span.valid()) {
         const auto text = [&](const Quantity& q) { return std::string(asset.source(q.span.file).view().substr(q.span.offset, q.span.length)); };
         d.fix = Fix{"swap lower and upper", Applicability::Unsafe,

@@ -24,11 +24,13 @@ class MimicDriveConflict final : public Rule {
       const std::string where = drive.origin.empty() ? (drive.instance.empty() ? std::string("a drive")
                                                                                : "PhysicsDriveAPI:" + drive.instance)
                                                      : "a drive from " + drive.origin;
-      out.report(drive.span.valid() ? drive.span : joint.name.span,
-                 fmt::format("mimic {} follows '{}' but also has {} (stiffness {}, damping {}): the drive pulls towards "
-                             "its own target and fights the mimic constraint; remove the drive",
-                             joint_label(joint), joint.mimic->reference.text, where,
-                             drive.stiffness ? describe(*drive.stiffness) : "0", drive.damping ? describe(*drive.damping) : "0"));
+      Diagnostic& d = out.report(drive.span.valid() ? drive.span : joint.name.span,
+                                 fmt::format("mimic {} also has {}", joint_label(joint), where));
+      d.note(fmt::format("The drive (stiffness {}, damping {}) pulls towards its own target while the mimic constraint "
+                         "makes the joint follow '{}': the two fight.",
+                         drive.stiffness ? describe(*drive.stiffness) : "0", drive.damping ? describe(*drive.damping) : "0",
+                         joint.mimic->reference.text));
+      d.note("Remove the drive from the mimic joint; the followed joint's drive moves both.");
     }
   }
 

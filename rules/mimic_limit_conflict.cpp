@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "rules/all_rules.h"
 #include "rules/support.h"
@@ -10,20 +11,30 @@
 namespace assetlint::rules {
 namespace {
 
+bool has_limits(const Joint& j) {
+  return j.type != JointType::Continuous && is_single_dof(j.type) && j.lower && j.upper &&
+         j.lower->value <= j.upper->value;
+}
+
+// The leader positions a follower can hold: lower ≤ m·q + offset ≤ upper.
+std::pair<double, double> leader_range_held(const Joint& follower) {
+  const double m = follower.mimic->multiplier.value, o = follower.mimic->offset.value;
+  if (m == 0) return {-INFINITY, INFINITY};
+  const double a = (follower.lower->value - o) / m, b = (follower.upper->value - o) / m;
+  return {std::min(a, b), std::max(a, b)};
+}
+
 class MimicLimitConflict final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double tolerance = rule_option(info_, settings, "tolerance");
+    std::vector<const Joint*> leaders_narrowed;  // one narrowing fix per leader
     for (const Joint& joint : asset.joints) {
-      if (!joint.mimic || joint.type == JointType::Continuous || !is_single_dof(joint.type) || !joint.lower || !joint.upper)
-        continue;
+      if (!joint.mimic || !has_limits(joint)) continue;
       const Joint* reference = asset.followed_joint(joint);
-      if (!reference || reference->type == JointType::Continuous || !is_single_dof(reference->type) || !reference->lower ||
-          !reference->upper)
-        continue;
-      if (reference->lower->value > reference->upper->value || joint.lower->value > joint.upper->value) continue;
+      if (!reference || !has_limits(*reference)) continue;
       const double m = joint.mimic->multiplier.value;
       const double offset = joint.mimic->offset.value;
       const double a = m * reference->lower->value + offset;
@@ -35,7 +46,8 @@ class MimicLimitConflict final : public Rule {
 
       const Unit unit = joint.lower->unit;
       const auto range = [&](double low, double high) {
-        return fmt::format("[{}, {}]", format_number(from_model_units(low, unit)), format_number(from_model_units(high, unit)));
+        return fmt::format("[{}, {}] {}", format_number(from_model_units(low, unit)),
+                           format_number(from_model_units(high, unit)), unit_symbol(unit));
       };
       const std::string convention = asset.format == SourceFormat::Usda
                                          ? fmt::format("q + {}·q_ref + {} = 0",
@@ -45,24 +57,76 @@ class MimicLimitConflict final : public Rule {
                                                        format_number(from_model_units(offset, unit)));
       Diagnostic& d = out.report(
           (below ? joint.lower : joint.upper)->span.valid() ? (below ? joint.lower : joint.upper)->span : joint.limit_span,
-          fmt::format("range {} {} of '{}' maps through the mimic ({}) to {} {}, outside the limits {} of {}: "
-                      "the joint limit fights the mimic constraint",
-                      range(reference->lower->value, reference->upper->value), unit_symbol(unit), reference->name.text,
-                      convention, range(mapped_low, mapped_high), unit_symbol(unit),
-                      range(joint.lower->value, joint.upper->value), joint_label(joint)));
-      std::vector<Edit> edits;
-      if (below && joint.lower->span.valid()) edits.push_back(replace_value(*joint.lower, mapped_low, 8));
-      if (above && joint.upper->span.valid()) edits.push_back(replace_value(*joint.upper, mapped_high, 8));
-      if (!edits.empty()) {
-        d.fix = Fix{fmt::format("widen the limits to {} {}", range(std::min(mapped_low, joint.lower->value),
-                                                                   std::max(mapped_high, joint.upper->value)),
-                                unit_symbol(unit)),
-                    Applicability::Unsafe, std::move(edits)};
+          fmt::format("'{}' must reach {} to follow '{}', outside its limits {}", joint.name.text,
+                      range(mapped_low, mapped_high), reference->name.text,
+                      range(joint.lower->value, joint.upper->value)));
+      d.note(reference->name.span,
+             fmt::format("'{}' moves over {}; the mimic ({}) maps that to {}.", reference->name.text,
+                         range(reference->lower->value, reference->upper->value), convention,
+                         range(mapped_low, mapped_high)));
+      d.note("The joint limit then fights the mimic constraint: one of them is violated whenever the leader is near "
+             "that end.");
+      // Fixes an engineer would accept, in order: a sign error mirrored, the leader narrowed
+      // to what every follower holds, and only then the follower widened. All change limits.
+      if (!joint.lower->span.valid() || !joint.upper->span.valid()) continue;
+      const double mirrored_low = -joint.upper->value, mirrored_high = -joint.lower->value;
+      if (mapped_low >= mirrored_low - tolerance && mapped_high <= mirrored_high + tolerance) {
+        d.note(fmt::format("The mirrored limits {} hold the mapped range: most likely a sign error.",
+                           range(mirrored_low, mirrored_high)));
+        d.fix = Fix{fmt::format("mirror the limits of '{}' to {}", joint.name.text, range(mirrored_low, mirrored_high)),
+                    Applicability::Unsafe,
+                    {replace_value(*joint.lower, mirrored_low, 8), replace_value(*joint.upper, mirrored_high, 8)}};
+        continue;
       }
+      if (auto narrowed = narrowed_leader(asset, *reference, tolerance)) {
+        const Unit leader_unit = reference->lower->unit;
+        const auto leader_range = [&](double low, double high) {
+          return fmt::format("[{}, {}] {}", format_number(from_model_units(low, leader_unit)),
+                             format_number(from_model_units(high, leader_unit)), unit_symbol(leader_unit));
+        };
+        d.note(reference->name.span,
+               fmt::format("Every joint that follows '{}' can hold it over {}.", reference->name.text,
+                           leader_range(narrowed->first, narrowed->second)));
+        if (std::find(leaders_narrowed.begin(), leaders_narrowed.end(), reference) == leaders_narrowed.end()) {
+          leaders_narrowed.push_back(reference);
+          std::vector<Edit> edits;
+          if (narrowed->first > reference->lower->value) edits.push_back(replace_value(*reference->lower, narrowed->first, 8));
+          if (narrowed->second < reference->upper->value) edits.push_back(replace_value(*reference->upper, narrowed->second, 8));
+          d.fix = Fix{fmt::format("narrow the limits of '{}' to {}", reference->name.text,
+                                  leader_range(narrowed->first, narrowed->second)),
+                      Applicability::Unsafe, std::move(edits)};
+        } else {
+          d.note("The fix on the first finding for this leader narrows it, which resolves this one too.");
+        }
+        continue;
+      }
+      std::vector<Edit> edits;
+      if (below) edits.push_back(replace_value(*joint.lower, mapped_low, 8));
+      if (above) edits.push_back(replace_value(*joint.upper, mapped_high, 8));
+      d.fix = Fix{fmt::format("widen the limits of '{}' to {}", joint.name.text,
+                              range(std::min(mapped_low, joint.lower->value), std::max(mapped_high, joint.upper->value))),
+                  Applicability::Unsafe, std::move(edits)};
     }
   }
 
  private:
+  // The leader's range cut down to what every follower with limits can hold, when that is a
+  // real narrowing (not empty, not the whole range) and the leader's limits can be edited.
+  static std::optional<std::pair<double, double>> narrowed_leader(const Asset& asset, const Joint& leader,
+                                                                 double tolerance) {
+    if (!leader.lower->span.valid() || !leader.upper->span.valid()) return std::nullopt;
+    double low = leader.lower->value, high = leader.upper->value;
+    for (const Joint& f : asset.joints) {
+      if (!f.mimic || f.mimic->reference.text != leader.name.text || !has_limits(f)) continue;
+      const auto [held_low, held_high] = leader_range_held(f);
+      low = std::max(low, held_low);
+      high = std::min(high, held_high);
+    }
+    if (high - low <= tolerance) return std::nullopt;
+    if (low <= leader.lower->value + tolerance && high >= leader.upper->value - tolerance) return std::nullopt;
+    return std::pair{low, high};
+  }
+
   RuleInfo info_{"mimic-limit-conflict",
                  "The followed joint's range, mapped through the mimic gearing, leaves the mimic joint's limits",
                  Severity::Error,

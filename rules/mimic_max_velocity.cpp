@@ -22,50 +22,70 @@ class MimicMaxVelocity final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings&, Reporter& out) const override {
+    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !is_single_dof(joint.type) || !joint.velocity || !joint.velocity->span.valid()) continue;
       const Quantity& velocity = *joint.velocity;
+      const bool usd = asset.format == SourceFormat::Usda;
+      if (usd && velocity.authored >= kUsdDefaultMaxVelocityDeg) continue;
       const Joint* reference = asset.followed_joint(joint);
       const double gearing = std::fabs(joint.mimic->multiplier.value);
       const Quantity* reference_velocity =
           reference && is_single_dof(reference->type) && reference->velocity && reference->velocity->value > 0 ? &*reference->velocity : nullptr;
+      const double needed = reference_velocity ? gearing * reference_velocity->value : 0.0;
 
-      if (asset.format == SourceFormat::Usda) {
-        if (velocity.authored >= kUsdDefaultMaxVelocityDeg) continue;
-        // USD can leave the attribute unauthored, which is what the guide asks for.
-        std::string comparison =
-            reference_velocity
-                ? fmt::format("; '{}' is limited to {}, which bounds this joint at {} through gearing {}",
-                              reference->name.text, describe(*reference_velocity),
-                              describe(gearing * reference_velocity->value, velocity.unit),
-                              format_number(joint.mimic->multiplier.authored))
-                : std::string();
-        Diagnostic& d = out.report(
-            velocity.span, fmt::format("mimic {} sets max joint velocity {}; leave it unset on mimic joints{}",
-                                       joint_label(joint), describe(velocity), comparison));
-        if (velocity.declaration.valid()) {
-          d.fix = Fix{"remove maxJointVelocity from the mimic joint", Applicability::Safe,
-                      {Edit{velocity.declaration.file, velocity.declaration.offset, velocity.declaration.length, ""}}};
-        }
-        continue;
+      if (reference_velocity && velocity.value < needed * (1 - kSlack)) {
+        report_too_low(joint, *reference, *reference_velocity, needed, usd, out);
+      } else if (usd) {
+        // At or above the bound the clamp never acts: harmless, only not what the guide does.
+        // URDF has no "unset" (urdfdom requires velocity), so there it passes.
+        Diagnostic& d = out.report(velocity.span, Severity::Info,
+                                   fmt::format("mimic {} sets a max joint velocity: unnecessary", joint_label(joint)));
+        d.note(fmt::format("It sets {}; the guide leaves max joint velocity unset on mimic joints.", describe(velocity)));
+        if (reference_velocity)
+          d.note(reference->name.span, fmt::format("'{}' is limited to {}, which bounds this joint at {} through "
+                                                   "gearing {}: the clamp never acts.",
+                                                   reference->name.text, describe(*reference_velocity),
+                                                   describe(needed, velocity.unit),
+                                                   format_number(joint.mimic->multiplier.authored)));
+        else
+          d.note("The followed joint authors no velocity limit, so there is no bound to compare with.");
+        add_removal(velocity, d);
       }
-
-      if (!reference_velocity) continue;
-      const double needed = gearing * reference_velocity->value;
-      if (velocity.value >= needed * (1 - kSlack)) continue;
-      Diagnostic& d = out.report(
-          velocity.span,
-          fmt::format("mimic {} is limited to {}, below |multiplier {}| × {} of '{}' = {}: the velocity clamp "
-                      "fights the mimic constraint",
-                      joint_label(joint), describe(velocity), format_number(joint.mimic->multiplier.authored),
-                      describe(*reference_velocity), reference->name.text, describe(needed, velocity.unit)));
-      d.fix = Fix{fmt::format("raise the limit to {}", describe(needed, velocity.unit)), Applicability::Safe,
-                  {Edit{velocity.span.file, velocity.span.offset, velocity.span.length,
-                        format_number_at_least(velocity.authored_for(needed))}}};
     }
   }
 
  private:
+  static void report_too_low(const Joint& joint, const Joint& reference, const Quantity& reference_velocity,
+                             double needed, bool usd, Reporter& out) {
+    const Quantity& velocity = *joint.velocity;
+    Diagnostic& d = out.report(velocity.span, fmt::format("mimic {} is limited below the velocity its gearing demands",
+                                                          joint_label(joint)));
+    d.note(fmt::format("Its own limit is {}; it must reach {}.", describe(velocity), describe(needed, velocity.unit)));
+    d.note(reference.name.span,
+           fmt::format("'{}' is limited to {}; through |multiplier {}| this joint must reach {}.", reference.name.text,
+                       describe(reference_velocity), format_number(joint.mimic->multiplier.authored),
+                       describe(needed, velocity.unit)));
+    d.note("The velocity clamp then fights the mimic constraint; with a hard mimic the guide warns this can make the "
+           "simulation unstable.");
+    if (usd) {
+      add_removal(velocity, d);
+      return;
+    }
+    // Raising a limit changes the robot: never a safe fix.
+    d.fix = Fix{fmt::format("raise the limit to {}", describe(needed, velocity.unit)), Applicability::Unsafe,
+                {Edit{velocity.span.file, velocity.span.offset, velocity.span.length,
+                      format_number_at_least(velocity.authored_for(needed))}}};
+  }
+
+  // USD can leave the attribute unauthored (PhysX's default), which is what the guide asks for.
+  // Deleting a vendor's value is still a change to their asset: unsafe.
+  static void add_removal(const Quantity& velocity, Diagnostic& d) {
+    if (!velocity.declaration.valid()) return;
+    d.fix = Fix{"remove maxJointVelocity from the mimic joint (unset: PhysX's default)", Applicability::Unsafe,
+                {Edit{velocity.declaration.file, velocity.declaration.offset, velocity.declaration.length, ""}}};
+  }
+
   RuleInfo info_{"mimic-max-velocity",
                  "A mimic joint's own velocity limit can clamp it below what the joint it follows demands",
                  Severity::Warning, true, RuleOrigin::Check, {}};

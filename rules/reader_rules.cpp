@@ -32,4 +32,19 @@ const RuleInfo kUnusedSuppression{
     "An inline suppression comment that suppresses nothing, names an unknown rule, or is malformed",
     Severity::Warning, true, RuleOrigin::Reader, {}};
 
+const RuleInfo kMjcfUnsupported{
+    "mjcf-unsupported",
+    "An MJCF construct asset-lint does not model (nonlinear joint coupling, tendon or site transmission, dampratio)",
+    Severity::Info, false, RuleOrigin::Reader, {}};
+
+const RuleInfo kDriveInstanceIgnored{
+    "drive-instance-ignored",
+    "A USD drive instance the joint type does not read (rotX on a revolute joint, …): it drives nothing",
+    Severity::Warning, false, RuleOrigin::Reader, {}};
+
+const RuleInfo kMimicLimitsRequired{
+    "mimic-limits-required",
+    "A USD mimic on (or following) a revolute joint without finite limits: omni.physx refuses to create it",
+    Severity::Error, false, RuleOrigin::Reader, {}};
+
 }  // namespace assetlint::rules

@@ -11,5 +11,8 @@ extern const RuleInfo kLayerUnresolved;
 extern const RuleInfo kStaleSchemaAttribute;
 extern const RuleInfo kMimicAxisInstance;
 extern const RuleInfo kUnusedSuppression;
+extern const RuleInfo kMjcfUnsupported;
+extern const RuleInfo kDriveInstanceIgnored;
+extern const RuleInfo kMimicLimitsRequired;
 
 }  // namespace assetlint::rules

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "rules/all_rules.h"
+#include "rules/compare_rules.h"
 #include "rules/reader_rules.h"
 
 namespace assetlint::rules {
@@ -13,6 +14,7 @@ const std::vector<const Rule*>& checks() {
       &structure_mimic_reference(),
       &limits_inverted(),
       &units_angle_degrees(),
+      &units_angle_radians(),
       &units_velocity_implausible(),
       &mimic_max_velocity(),
       &mimic_limit_conflict(),
@@ -32,7 +34,8 @@ const std::vector<const Rule*>& checks() {
 const std::vector<const RuleInfo*>& catalog() {
   static const std::vector<const RuleInfo*> list = [] {
     std::vector<const RuleInfo*> all{&kParseError, &kUrdfInvalid, &kLayerUnresolved, &kStaleSchemaAttribute,
-                                     &kMimicAxisInstance, &kUnusedSuppression};
+                                     &kMimicAxisInstance, &kUnusedSuppression, &kDriveInstanceIgnored,
+                                     &kMimicLimitsRequired, &kMjcfUnsupported, &kCompareMismatch, &kCompareUnmatched};
     for (const Rule* rule : checks()) all.push_back(&rule->info());
     std::sort(all.begin(), all.end(), [](const RuleInfo* a, const RuleInfo* b) { return a->id < b->id; });
     return all;

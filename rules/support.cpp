@@ -16,6 +16,15 @@ std::string describe(double model_value, Unit file_unit, int significant) {
   return fmt::format("{} ({})", in_file, with_symbol(format_number(model_value, significant), model_unit(file_unit)));
 }
 
+std::string describe(const Quantity& q, int significant) { return describe_written(q, q.value, significant); }
+
+std::string describe_written(const Quantity& q, double model_value, int significant) {
+  if (q.scale == 1.0 || !q.span.valid()) return describe(model_value, q.unit, significant);
+  const auto symbol = unit_symbol(model_unit(q.unit));
+  return fmt::format("{} (stage units; {}{}{})", format_number(q.authored_for(model_value), significant),
+                     format_number(model_value, significant), symbol.empty() ? "" : " ", symbol);
+}
+
 Edit replace_value(const Quantity& q, double model_value, int significant) {
   return Edit{q.span.file, q.span.offset, q.span.length, format_number(q.authored_for(model_value), significant)};
 }

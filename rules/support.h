@@ -10,7 +10,13 @@ namespace assetlint::rules {
 // A model value as the file writes it and, when the file's unit differs, as PhysX
 // sees it: "146.5 deg/s (2.556 rad/s)" or "5700 N·m/rad".
 std::string describe(double model_value, Unit file_unit, int significant = 4);
-inline std::string describe(const Quantity& q, int significant = 4) { return describe(q.value, q.unit, significant); }
+// A value read from a file: on a scaled USD stage (metersPerUnit or kilogramsPerUnit ≠ 1)
+// the literal as written, then the SI/PhysX value: "300 (stage units; 3 m/s)".
+std::string describe(const Quantity& q, int significant = 4);
+
+// A new model value as it would be written into q's literal: "15 (stage units; 0.15 m/s)" on a
+// scaled stage, else like describe(model_value, q.unit).
+std::string describe_written(const Quantity& q, double model_value, int significant = 4);
 
 // An edit that rewrites a quantity's literal with a new model value, in the file's unit.
 Edit replace_value(const Quantity& q, double model_value, int significant = 6);

@@ -1,8 +1,12 @@
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <numbers>
 #include <optional>
 
+#include "physics/gripper.h"
 #include "rules/all_rules.h"
 #include "rules/support.h"
 #include "util/numbers.h"
@@ -28,71 +32,181 @@ std::string seconds(double t) {
   return t < 1.0 ? format_number(t * 1000.0, 3) + " ms" : format_number(t, 3) + " s";
 }
 
+// A value typed without measuring: at least 100 with one significant digit (100, 200, 3000),
+// or above the placeholder bound. It is explained by "nobody measured it" before any unit.
+bool round_value(double authored, double placeholder) {
+  if (authored >= placeholder) return true;
+  if (authored < 100 || authored != std::floor(authored)) return false;
+  double leading = authored;
+  while (leading >= 10 && std::fmod(leading, 10.0) == 0) leading /= 10;
+  return leading < 10;
+}
+
+// What one joint's velocity limit looks like on its own.
+struct Verdict {
+  const Joint* joint = nullptr;
+  std::string range_text;
+  double time = 0;                 // seconds to cross the range at the authored limit
+  bool fast = false;               // too fast (else too slow)
+  bool gripper = false;            // a gripper finger fast by its closing time alone
+  std::optional<Unit> reading;     // the unit that makes the crossing time plausible
+  double meant = 0;                // the value read in that unit, model units
+  double meant_time = 0;
+};
+
 class UnitsVelocityImplausible final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
     const double min_time = rule_option(info_, settings, "min_traversal_time_s");
     const double max_time = rule_option(info_, settings, "max_traversal_time_s");
-    const double max_angular = rule_option(info_, settings, "max_angular_velocity");
-    const double max_linear = rule_option(info_, settings, "max_linear_velocity");
     const double placeholder = rule_option(info_, settings, "placeholder_velocity");
 
+    // One verdict per value: identical limits in one file were typed once and copied.
+    std::map<std::pair<double, Unit>, std::vector<Verdict>> by_value;
+    std::vector<std::pair<double, Unit>> order;
     for (const Joint& joint : asset.joints) {
-      if (!joint.velocity || !joint.velocity->span.valid() || !is_single_dof(joint.type)) continue;
-      const Quantity& velocity = *joint.velocity;
-      if (velocity.value <= 0) continue;
-      double range = 0;
-      std::string range_text;
-      if (joint.type == JointType::Continuous) {
-        range = 2 * std::numbers::pi;
-        range_text = "one turn";
-      } else if (joint.lower && joint.upper && joint.upper->value > joint.lower->value) {
-        range = joint.upper->value - joint.lower->value;
-        range_text = fmt::format("its {} range", describe(range, joint.lower->unit));
-      } else {
+      auto verdict = judge(asset, joint, settings);
+      if (!verdict) continue;
+      const auto key = std::pair{joint.velocity->authored, joint.velocity->unit};
+      auto& list = by_value[key];
+      if (list.empty()) order.push_back(key);
+      list.push_back(std::move(*verdict));
+    }
+    for (const auto& key : order) {
+      const auto& verdicts = by_value[key];
+      const Verdict& first = verdicts.front();
+      const Quantity& velocity = *first.joint->velocity;
+      const std::string also = others_note(verdicts);
+      if (first.fast && round_value(velocity.authored, placeholder)) {
+        // A mimic's own limit is mimic-max-velocity's verdict (Robotiq's 10000 deg/s): one per line.
+        if (std::all_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.joint->is_mimic(); }))
+          continue;
+        Diagnostic& d = out.report(velocity.span, Severity::Info,
+                                   fmt::format("velocity limit {} of {} is a placeholder, not a measured limit",
+                                               describe(velocity), joint_label(*first.joint)));
+        d.note(fmt::format("At that speed the joint would cross {} in {} (less than {}); a round value that fast "
+                           "is a default nobody replaced, not a unit mistake.",
+                           first.range_text, seconds(first.time), seconds(min_time)));
+        if (!also.empty()) d.note(also);
+        d.note("Set the joint's real maximum speed from the data sheet; no value is proposed.");
         continue;
       }
-      const double time = range / velocity.value;
-      const bool angular = is_angular(joint.type);
-      const double speed_bound = angular ? max_angular : max_linear;
-      auto plausible = [&](double t) { return t >= min_time && t <= max_time; };
-
-      if (time < min_time && velocity.value > speed_bound) {
-        if (velocity.value >= placeholder) {
-          out.report(velocity.span,
-                     fmt::format("velocity limit {} of {} is a placeholder, not a limit: it would cross {} in {}; "
-                                 "set the joint's real maximum speed",
-                                 describe(velocity), joint_label(joint), range_text, seconds(time)));
-          continue;
-        }
-        report_reading(out, joint, velocity, faster_reading(velocity.unit), range, range_text, time, "fast",
-                       plausible, fmt::format("less than {}", seconds(min_time)));
-      } else if (time > max_time) {
-        report_reading(out, joint, velocity, slower_reading(velocity.unit), range, range_text, time, "slow",
-                       plausible, fmt::format("more than {}", seconds(max_time)));
+      if (first.gripper) {
+        report_fast_gripper(verdicts, min_time, settings, out);
+        continue;
       }
+      const bool any_reading = std::any_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.reading.has_value(); });
+      if (!any_reading) continue;  // fast but explained by no unit: not a unit mistake
+      const bool one_reading = std::all_of(verdicts.begin(), verdicts.end(), [&](const Verdict& v) {
+        return v.reading && v.reading == first.reading && v.fast == first.fast;
+      });
+      Diagnostic& d = out.report(velocity.span, fmt::format("velocity limit {} of {} is implausibly {}",
+                                                            describe(velocity), joint_label(*first.joint),
+                                                            first.fast ? "fast" : "slow"));
+      d.note(fmt::format("It would cross {} in {} ({} {}).", first.range_text, seconds(first.time),
+                         first.fast ? "less than" : "more than", seconds(first.fast ? min_time : max_time)));
+      if (!also.empty()) d.note(also);
+      if (!one_reading) {
+        d.note("No other unit makes it plausible on every joint that carries it, so no conversion is proposed.");
+        continue;
+      }
+      d.note(fmt::format("Read as {} it is {} and takes {}: it was probably written in {}.",
+                         unit_symbol(*first.reading), describe(first.meant, velocity.unit), seconds(first.meant_time),
+                         unit_symbol(*first.reading)));
+      Fix fix{fmt::format("convert the velocity limit from {} to {}: write {}", unit_symbol(*first.reading),
+                          unit_symbol(velocity.unit), describe(first.meant, velocity.unit)),
+              Applicability::Unsafe, {}};
+      for (const Verdict& v : verdicts) fix.edits.push_back(replace_value(*v.joint->velocity, v.meant, 4));
+      d.fix = std::move(fix);
     }
   }
 
  private:
-  template <typename Plausible>
-  void report_reading(Reporter& out, const Joint& joint, const Quantity& velocity, std::optional<Unit> reading,
-                      double range, const std::string& range_text, double time, std::string_view direction,
-                      Plausible plausible, const std::string& bound) const {
-    if (!reading) return;
-    const double meant = to_model_units(velocity.authored, *reading);
-    const double meant_time = range / meant;
-    if (!plausible(meant_time)) return;
-    Diagnostic& d = out.report(
-        velocity.span,
-        fmt::format("velocity limit {} of {} is implausibly {}: it would cross {} in {} ({}); read as {} it is {} "
-                    "and takes {}, so it was probably written in {}",
-                    describe(velocity), joint_label(joint), direction, range_text, seconds(time), bound,
-                    unit_symbol(*reading), describe(meant, velocity.unit), seconds(meant_time), unit_symbol(*reading)));
-    d.fix = Fix{fmt::format("convert the velocity limit from {} to {}", unit_symbol(*reading), unit_symbol(velocity.unit)),
-                Applicability::Unsafe, {replace_value(velocity, meant, 4)}};
+  std::optional<Verdict> judge(const Asset& asset, const Joint& joint, const Settings& settings) const {
+    if (!joint.velocity || !joint.velocity->span.valid() || !is_single_dof(joint.type)) return std::nullopt;
+    const Quantity& velocity = *joint.velocity;
+    if (velocity.value <= 0) return std::nullopt;
+    Verdict v;
+    v.joint = &joint;
+    double range = 0;
+    if (joint.type == JointType::Continuous) {
+      range = 2 * std::numbers::pi;
+      v.range_text = "one turn";
+    } else if (joint.lower && joint.upper && joint.upper->value > joint.lower->value) {
+      range = joint.upper->value - joint.lower->value;
+      v.range_text = fmt::format("its {} range", describe(range, joint.lower->unit));
+    } else {
+      return std::nullopt;
+    }
+    const double min_time = rule_option(info_, settings, "min_traversal_time_s");
+    const double max_time = rule_option(info_, settings, "max_traversal_time_s");
+    const double speed_bound = rule_option(info_, settings, is_angular(joint.type) ? "max_angular_velocity" : "max_linear_velocity");
+    v.time = range / velocity.value;
+    if (v.time < min_time && velocity.value > speed_bound) {
+      v.fast = true;
+    } else if (v.time < min_time && gripper_finger(asset, joint, settings)) {
+      // A finger's stroke is short, so a modest-looking speed still slams it shut: no unit is blamed.
+      v.fast = v.gripper = true;
+      return v;
+    } else if (v.time <= max_time) {
+      return std::nullopt;
+    }
+    const std::optional<Unit> reading = v.fast ? faster_reading(velocity.unit) : slower_reading(velocity.unit);
+    if (reading) {
+      const double meant = to_model_units(velocity.authored, *reading);
+      const double meant_time = range / meant;
+      if (meant_time >= min_time && meant_time <= max_time) v.reading = reading, v.meant = meant, v.meant_time = meant_time;
+    }
+    // Too slow with no unit that explains it is not this rule's business (joint-max-velocity).
+    if (!v.fast && !v.reading) return std::nullopt;
+    return v;
+  }
+
+  // A prismatic finger coupled to another by a mimic (the two fingers of a parallel gripper),
+  // unless the [gripper] spec judges its speed (joint-max-velocity).
+  static bool gripper_finger(const Asset& asset, const Joint& joint, const Settings& settings) {
+    if (joint.type != JointType::Prismatic) return false;
+    const Joint* spec = physics::spec_joint(asset, settings);
+    const Joint* leader = joint.is_mimic() ? asset.find_joint(joint.mimic->reference.text) : &joint;
+    if (leader && leader == spec && physics::required_velocity(settings, *leader)) return false;
+    if (joint.is_mimic()) return leader != nullptr;
+    for (const Joint& other : asset.joints)
+      if (other.is_mimic() && other.mimic->reference.text == joint.name.text) return true;
+    return false;
+  }
+
+  // Rethink's electric gripper: 5 m/s over 20.8 mm closes in 4 ms; YuMi's 2 m/s over 25 mm
+  // in 12.5 ms. Real grippers take a few hundred milliseconds or more.
+  void report_fast_gripper(const std::vector<Verdict>& verdicts, double min_time, const Settings& settings,
+                           Reporter& out) const {
+    const Verdict& first = verdicts.front();
+    const Quantity& velocity = *first.joint->velocity;
+    Diagnostic& d = out.report(velocity.span, Severity::Warning,
+                               fmt::format("gripper finger '{}' closes its stroke in {} at {}", first.joint->name.text,
+                                           seconds(first.time), describe(velocity)));
+    d.note(fmt::format("At {} the finger crosses {} in {}, under min_traversal_time_s {}; real grippers take hundreds "
+                       "of milliseconds (the guide's 2F-85 moves its fingers at 0.15 m/s).",
+                       describe(velocity), first.range_text, seconds(first.time), seconds(min_time)));
+    d.note(fmt::format("For a gripper finger (a prismatic joint coupled by a mimic) the closing time alone is the test, "
+                       "because its stroke is short; other joints must also exceed max_linear_velocity {} m/s.",
+                       format_number(rule_option(info_, settings, "max_linear_velocity"))));
+    const std::string also = others_note(verdicts);
+    if (!also.empty()) d.note(also);
+    d.note("The simulated fingers strike the object far harder than the real ones. Take the finger speed from the data "
+           "sheet, or give a [gripper] spec (stroke_m, finger_speed_m_s) for joint-max-velocity to judge it; no value is "
+           "proposed.");
+  }
+
+  static std::string others_note(const std::vector<Verdict>& verdicts) {
+    if (verdicts.size() < 2) return {};
+    std::string names;
+    for (std::size_t i = 1; i < verdicts.size() && i <= 5; ++i)
+      names += fmt::format("{}'{}'", i > 1 ? ", " : "", verdicts[i].joint->name.text);
+    return fmt::format("The same value is on {} more joint{}: {}{}; this verdict covers them all.", verdicts.size() - 1,
+                       verdicts.size() == 2 ? "" : "s", names, verdicts.size() > 6 ? ", …" : "");
   }
 
   RuleInfo info_{"units-velocity-implausible",

@@ -8,9 +8,10 @@ packages=(
   build-essential cmake ninja-build pkg-config
   liburdfdom-dev libtinyxml2-dev libeigen3-dev libfmt-dev libcli11-dev
   catch2 libtomlplusplus-dev nlohmann-json3-dev
-  # The fuzz smoke tests (fuzz/, a short libFuzzer run per target in the suite).
-  clang libclang-rt-14-dev
+  libmujoco-dev
 )
+# Fuzzing (fuzz/README.md) needs clang and libclang-rt-14-dev; the suite itself only replays
+# the fuzz regressions with the project's compiler, so they are not installed here.
 
 # Optional tools some tests use when present (they warn and skip otherwise). Installing
 # them is best effort: a failure here never fails the bootstrap.

@@ -66,11 +66,12 @@ TEST_CASE("cli: --fix alone leaves unsafe fixes and reports them (exit 1)", "[fi
 
 TEST_CASE("cli: --fix applies safe fixes without --unsafe-fixes", "[fix][cli]") {
   TempDir dir;
-  const fs::path file = copy_case(dir.path(), "mimic-max-velocity", "mimic_velocity_1.urdf", "gripper.urdf");
+  // Raising a velocity limit is unsafe (issue 15); stale suppressions are the safe fixes left.
+  const fs::path file = copy_case(dir.path(), "unused-suppression", "stale_directives.urdf", "gripper.urdf");
   auto r = run_cli({"--fix", "gripper.urdf"}, dir.path());
   CHECK(r.exit_code == 0);
-  CHECK(r.err == "asset-lint: fixed 1 problem in gripper.urdf\n");
-  CHECK(read_file(file) == read_file(fixture("mimic-max-velocity", "mimic_velocity_1.urdf.fixed")));
+  CHECK(r.err == "asset-lint: fixed 3 problems in gripper.urdf\n");
+  CHECK(read_file(file) == read_file(fixture("unused-suppression", "stale_directives.urdf.fixed")));
 }
 
 TEST_CASE("cli: --fix exits 1 when unfixable findings remain and prints them", "[fix][cli]") {

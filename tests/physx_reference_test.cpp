@@ -1,7 +1,8 @@
 // Real PhysX (5.6.1 compiled to WASM, npm physx-js-webidl 2.7.3, run with Node) as the
-// reference for the drive model: tests/physx_reference/run.mjs builds one link on a revolute
-// joint per case, measures free motion and the torque that holds it at a hard stop, and this
-// file checks those measurements. Skipped with a message when `node` or the package is absent
+// reference for the drive model in src/physics: tests/physx_reference/run.mjs builds one link
+// on a revolute joint per case, measures free motion and the torque that holds it at a hard
+// stop, and this file holds the model (drive row, static hold, frame stepper) to those numbers
+// at 1e-3 relative. Skipped with a message when `node` or the package is absent
 // (scripts/bootstrap.sh installs the package into tools/node_modules).
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,9 @@
 #include <string>
 
 #include "test_support.h"
+
+#include "physics/drive_row.h"
+#include "physics/step.h"
 
 using assetlint::test::read_file;
 using assetlint::test::source_dir;
@@ -141,3 +145,73 @@ TEST_CASE("physx reference: the stops are hard and the holds steady", "[physx]")
     CHECK(hold["torque"].get<double>() == Approx(hold["previous_frame_torque"].get<double>()).epsilon(1e-5));
   }
 }
+
+namespace {
+
+namespace physics = assetlint::physics;
+
+// The model's view of a measured case: the rate, the row (articulated inertia = the link
+// about the axis + armature: one link on a fixed base) and the force limit.
+physics::SimulationRate rate_of(const nlohmann::json& c) {
+  physics::SimulationRate rate;
+  rate.timesteps_per_second = c["rate"].get<double>();
+  rate.position_iterations = c["position_iterations"].get<double>();
+  rate.velocity_iterations = c["velocity_iterations"].get<double>();
+  rate.solver = c["solver"] == "TGS" ? physics::Solver::TGS : physics::Solver::PGS;
+  return rate;
+}
+
+physics::DriveRow row_of(const nlohmann::json& c) {
+  return physics::drive_row(rate_of(c), c["stiffness"].get<double>(), c["damping"].get<double>(),
+                            assetlint::DriveType::Force, c["inertia"].get<double>() + c["armature"].get<double>());
+}
+
+physics::ForceLimit force_limit_of(const nlohmann::json& c) {
+  physics::ForceLimit limit;
+  if (!c["max_force"].is_null()) limit.max_force = c["max_force"].get<double>();
+  limit.limits_are_forces = c["drive_limits_are_forces"].get<bool>();
+  return limit;
+}
+
+}  // namespace
+
+TEST_CASE("physx reference: the drive model holds what PhysX holds at a hard stop", "[physx]") {
+  if (skip_without_physx()) return;
+  for (const auto& c : measurements().json["cases"]) {
+    INFO(c["name"].get<std::string>());
+    const auto row = row_of(c);
+    const double target = c["target"].get<double>();
+    const double measured = c["hold"]["torque"].get<double>();
+    CHECK(physics::static_hold(row, target, force_limit_of(c)).force == Approx(measured).epsilon(1e-3));
+    // The frame stepper against the stop (the joint at rest on it) delivers the same.
+    physics::FrameLimits limits;
+    limits.force = force_limit_of(c);
+    limits.stop = 0.0;
+    const auto frame = physics::step_frame(row, limits, {}, {target, 0.0});
+    CHECK(frame.average_force(row.dt) == Approx(measured).epsilon(1e-3));
+    CHECK(frame.state.position == Approx(0.0).margin(1e-12));
+  }
+}
+
+TEST_CASE("physx reference: the frame stepper moves the joint as PhysX does", "[physx]") {
+  if (skip_without_physx()) return;
+  for (const auto& c : measurements().json["cases"]) {
+    INFO(c["name"].get<std::string>());
+    const auto row = row_of(c);
+    physics::FrameLimits limits;
+    limits.force = force_limit_of(c);
+    const double target = c["target"].get<double>();
+    const auto& positions = c["free_motion"]["position"];
+    physics::JointState state;
+    for (std::size_t frame = 0; frame < positions.size(); ++frame) {
+      INFO("frame " << frame + 1);
+      state = physics::step_frame(row, limits, state, {target, 0.0}).state;
+      const double measured = positions[frame].get<double>();
+      CHECK(state.position == Approx(measured).epsilon(1e-3));
+      // Near the target the error left is what tells models apart: to 1e-3 of it, or of 1 % of
+      // the target when less is left (PhysX computes in float32).
+      CHECK(target - state.position == Approx(target - measured).epsilon(1e-3).margin(1e-5 * target));
+    }
+  }
+}
+

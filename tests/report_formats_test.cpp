@@ -98,8 +98,10 @@ TEST_CASE("report: concise is one line per finding, no markers, no summary", "[r
   CHECK(r.out.find("gripper.urdf:9:19: limits-inverted revolute joint 'finger_joint'") == 0);
   CHECK(r.out.find("(fixable)") == std::string::npos);
   CHECK(r.out.find("Found") == std::string::npos);
-  auto clean = run_cli({"--output-format", "concise", "robotiq_2f85/robotiq_2f85.urdf"},
-                       assetlint::test::fixtures_dir());
+  assetlint::test::TempDir dir;  // the gripper without the guide's story configuration beside it
+  assetlint::test::write_file(dir.path() / "gripper.urdf",
+                              read_file(assetlint::test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf"));
+  auto clean = run_cli({"--output-format", "concise", "gripper.urdf"}, dir.path());
   CHECK(clean.exit_code == 0);
   CHECK(clean.out.empty());
 }
@@ -318,7 +320,7 @@ TEST_CASE("report: --statistics counts findings per rule, most frequent first", 
   CHECK(doc[0]["rule"] == "limits-inverted");
   CHECK(doc[0]["count"] == 1);
   CHECK(doc[1]["rule"] == "mimic-max-velocity");
-  CHECK(doc[1]["fixable"] == 1);
+  CHECK(doc[1]["fixable"] == 0);  // raising a velocity limit is an unsafe fix (issue 15)
   CHECK(run_cli({"--statistics", "--output-format", "sarif", "a.urdf"}, dir.path()).exit_code == 2);
 }
 
@@ -347,7 +349,12 @@ TEST_CASE("report: --exit-zero, --quiet and --output-file", "[report]") {
   // Two findings, each a primary line plus its notes and help; no summary.
   CHECK(std::count_if(quiet.out.begin(), quiet.out.end(), [](char c) { return c == '\n'; }) ==
         static_cast<long>(2 + count_lines_starting(quiet.out, "  ")));
-  CHECK(run_cli({"-q", "../robotiq_2f85/robotiq_2f85.urdf"}, report_dir()).out.empty());
+  {
+    assetlint::test::TempDir clean_dir;  // the gripper without the guide's story configuration
+    assetlint::test::write_file(clean_dir.path() / "gripper.urdf",
+                                read_file(assetlint::test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf"));
+    CHECK(run_cli({"-q", "gripper.urdf"}, clean_dir.path()).out.empty());
+  }
 
   assetlint::test::TempDir dir;
   const auto file = dir.path() / "report.json";

@@ -198,7 +198,7 @@ TEST_CASE("units-angle-degrees: the min_magnitude_rad option lowers the threshol
   CHECK(d.fix->edits[0].replacement == "0.0261799");
 }
 
-TEST_CASE("mimic-max-velocity: a mimic limited to 1.0 rad/s under a 2.9 rad/s joint, safe fix to 2.9", "[rules]") {
+TEST_CASE("mimic-max-velocity: a mimic limited to 1.0 rad/s under a 2.9 rad/s joint, unsafe fix to 2.9", "[rules]") {
   const std::string text = gripper(kMimicLimit, R"(<limit lower="-0.820305" upper="0" effort="4" velocity="1.0"/>)");
   const FileReport report = lint(text);
   REQUIRE(report.diagnostics.size() == 1);
@@ -207,12 +207,14 @@ TEST_CASE("mimic-max-velocity: a mimic limited to 1.0 rad/s under a 2.9 rad/s jo
   CHECK(d.severity == Severity::Warning);
   CHECK(d.span.line == 33);
   CHECK(d.span.column == 61);
-  CHECK(d.message ==
-        "mimic revolute joint 'finger_tip_joint' is limited to 1 rad/s, below |multiplier -1| × 2.9 rad/s of "
-        "'finger_joint' = 2.9 rad/s: the velocity clamp fights the mimic constraint");
+  CHECK(d.message == "mimic revolute joint 'finger_tip_joint' is limited below the velocity its gearing demands");
+  REQUIRE(d.notes.size() == 3);
+  CHECK(d.notes[0].message == "Its own limit is 1 rad/s; it must reach 2.9 rad/s.");
+  CHECK(d.notes[1].message == "'finger_joint' is limited to 2.9 rad/s; through |multiplier -1| this joint must reach "
+                              "2.9 rad/s.");
   REQUIRE(d.fix);
   CHECK(d.fix->title == "raise the limit to 2.9 rad/s");
-  CHECK(d.fix->applicability == Applicability::Safe);
+  CHECK(d.fix->applicability == Applicability::Unsafe);  // raising a limit changes the robot
   REQUIRE(d.fix->edits.size() == 1);
   CHECK(d.fix->edits[0].offset == offset_of(text, R"(velocity="1.0")", "1.0"));
   CHECK(d.fix->edits[0].length == 3);
@@ -242,17 +244,20 @@ TEST_CASE("mimic-limit-conflict: the ros-industrial 2F-85 mimic limits [0, 0.875
   CHECK(d.severity == Severity::Error);
   CHECK(d.span.line == 33);
   CHECK(d.span.column == 19);
-  CHECK(d.message ==
-        "range [0, 0.8] rad of 'finger_joint' maps through the mimic (multiplier -1, offset 0) to [-0.8, 0] rad, "
-        "outside the limits [0, 0.8757] of revolute joint 'finger_tip_joint': the joint limit fights the mimic "
-        "constraint");
+  CHECK(d.message == "'finger_tip_joint' must reach [-0.8, 0] rad to follow 'finger_joint', outside its limits [0, "
+                     "0.8757] rad");
+  REQUIRE(d.notes.size() == 3);
+  CHECK(d.notes[0].message ==
+        "'finger_joint' moves over [0, 0.8] rad; the mimic (multiplier -1, offset 0) maps that to [-0.8, 0] rad.");
+  // A sign error first (issue 15): the mirrored limits [-0.8757, 0] hold the mapped range.
   REQUIRE(d.fix);
-  CHECK(d.fix->title == "widen the limits to [-0.8, 0.8757] rad");
+  CHECK(d.fix->title == "mirror the limits of 'finger_tip_joint' to [-0.8757, 0] rad");
   CHECK(d.fix->applicability == Applicability::Unsafe);
-  REQUIRE(d.fix->edits.size() == 1);
+  REQUIRE(d.fix->edits.size() == 2);
   CHECK(d.fix->edits[0].offset == offset_of(text, R"(<limit lower="0" upper="0.8757")", "0"));
-  CHECK(d.fix->edits[0].length == 1);
-  CHECK(d.fix->edits[0].replacement == "-0.8");
+  CHECK(d.fix->edits[0].replacement == "-0.8757");
+  CHECK(d.fix->edits[1].offset == offset_of(text, R"(<limit lower="0" upper="0.8757")", "0.8757"));
+  CHECK(d.fix->edits[1].replacement == "0");
 }
 
 TEST_CASE("mimic-limit-conflict: offsets shift the mapped range; tolerance option", "[rules]") {
@@ -261,15 +266,15 @@ TEST_CASE("mimic-limit-conflict: offsets shift the mapped range; tolerance optio
   text = with(text, kMimicLimit, R"(<limit lower="0" upper="0.820305" effort="4" velocity="2.9"/>)");
   const auto found = of_rule(lint(text), "mimic-limit-conflict");
   REQUIRE(found.size() == 1);
-  CHECK(found[0].message ==
-        "range [0, 0.820305] rad of 'finger_joint' maps through the mimic (multiplier 1, offset 0.1) to [0.1, "
-        "0.920305] rad, outside the limits [0, 0.820305] of revolute joint 'finger_tip_joint': the joint limit "
-        "fights the mimic constraint");
+  CHECK(found[0].message == "'finger_tip_joint' must reach [0.1, 0.920305] rad to follow 'finger_joint', outside its "
+                             "limits [0, 0.820305] rad");
+  // No sign error; the follower holds the leader over [0, 0.720305]: narrow the leader rather
+  // than push the follower past its stops.
   REQUIRE(found[0].fix);
   REQUIRE(found[0].fix->edits.size() == 1);
-  CHECK(found[0].fix->edits[0].offset == offset_of(text, R"(upper="0.820305" effort="4")", "0.820305"));
-  CHECK(found[0].fix->edits[0].replacement == "0.920305");
-  CHECK(found[0].fix->title == "widen the limits to [0, 0.920305] rad");
+  CHECK(found[0].fix->edits[0].offset == offset_of(text, R"(upper="0.820305" effort="24")", "0.820305"));
+  CHECK(found[0].fix->edits[0].replacement == "0.720305");
+  CHECK(found[0].fix->title == "narrow the limits of 'finger_joint' to [0, 0.720305] rad");
 
   // 5e-5 rad of overhang is inside the default tolerance (1e-4) but not inside 1e-6.
   const std::string close = gripper(kMimicLimit, R"(<limit lower="-0.820255" upper="0" effort="4" velocity="2.9"/>)");
@@ -278,7 +283,7 @@ TEST_CASE("mimic-limit-conflict: offsets shift the mapped range; tolerance optio
   strict.rule_options["mimic-limit-conflict"]["tolerance"] = 1e-6;
   const auto strict_found = of_rule(lint(close, strict), "mimic-limit-conflict");
   REQUIRE(strict_found.size() == 1);
-  CHECK(strict_found[0].fix->edits.at(0).replacement == "-0.820305");
+  CHECK(strict_found[0].fix->title == "narrow the limits of 'finger_joint' to [0, 0.820255] rad");
 }
 
 TEST_CASE("limits-inverted: lower above upper, with a swap fix", "[rules]") {
@@ -290,8 +295,8 @@ TEST_CASE("limits-inverted: lower above upper, with a swap fix", "[rules]") {
   CHECK(d.span.line == 27);
   CHECK(d.span.column == 19);
   CHECK(d.message ==
-        "revolute joint 'finger_joint' has lower limit 0.8203 rad above upper limit 0 rad: the joint has no valid "
-        "position");
+        "revolute joint 'finger_joint' has lower limit 0.8203 rad above upper limit 0 rad");
+  CHECK(d.notes.at(0).message == "The joint has no valid position: every pose violates one of its limits.");
   REQUIRE(d.fix);
   CHECK(d.fix->applicability == Applicability::Unsafe);
   REQUIRE(d.fix->edits.size() == 2);
@@ -313,12 +318,12 @@ TEST_CASE("units-velocity-implausible: 166 (deg/s) on the 0.82 rad finger, fix t
   CHECK(d.severity == Severity::Warning);
   CHECK(d.span.line == 27);
   CHECK(d.span.column == 61);
-  CHECK(d.message ==
-        "velocity limit 166 rad/s of revolute joint 'finger_joint' is implausibly fast: it would cross its 0.8203 rad "
-        "range in 4.94 ms (less than 20 ms); read as deg/s it is 2.897 rad/s and takes 283 ms, so it was probably "
-        "written in deg/s");
+  CHECK(d.message == "velocity limit 166 rad/s of revolute joint 'finger_joint' is implausibly fast");
+  REQUIRE(d.notes.size() == 2);
+  CHECK(d.notes[0].message == "It would cross its 0.8203 rad range in 4.94 ms (less than 20 ms).");
+  CHECK(d.notes[1].message == "Read as deg/s it is 2.897 rad/s and takes 283 ms: it was probably written in deg/s.");
   REQUIRE(d.fix);
-  CHECK(d.fix->title == "convert the velocity limit from deg/s to rad/s");
+  CHECK(d.fix->title == "convert the velocity limit from deg/s to rad/s: write 2.897 rad/s");
   CHECK(d.fix->applicability == Applicability::Unsafe);
   REQUIRE(d.fix->edits.size() == 1);
   CHECK(d.fix->edits[0].offset == offset_of(text, R"(velocity="166")", "166"));
@@ -336,7 +341,8 @@ TEST_CASE("units-velocity-implausible: placeholders and a legit fast joint; max_
         gripper(kDrivenLimit, R"(<limit lower="0" upper="0.820305" effort="24" velocity=")" + velocity + R"("/>)"),
         only);
     REQUIRE(report.diagnostics.size() == 1);
-    CHECK(report.diagnostics[0].message.find("is a placeholder, not a limit") != std::string::npos);
+    CHECK(report.diagnostics[0].message.find("is a placeholder, not a measured limit") != std::string::npos);
+    CHECK(report.diagnostics[0].severity == Severity::Info);
     CHECK_FALSE(report.diagnostics[0].fix);
   }
   // 30 rad/s over 0.5 rad: 16.7 ms, faster than 20 ms, but under the 50 rad/s bound.
@@ -359,9 +365,9 @@ TEST_CASE("inertia-invalid: triangle inequality numbers and the triangle_toleran
   CHECK(d.severity == Severity::Error);
   CHECK(d.span.line == 13);
   CHECK(d.span.column == 7);
-  CHECK(d.message ==
-        "inertia of link 'knuckle' violates the triangle inequality: principal moments [4e-6, 4.1e-6, 2.2e-5] kg·m², "
-        "and 2.2e-5 > 4e-6 + 4.1e-6; no rigid body has such a tensor");
+  CHECK(d.message == "inertia of link 'knuckle' violates the triangle inequality");
+  REQUIRE(d.notes.size() == 2);
+  CHECK(d.notes[0].message == "Principal moments [4e-6, 4.1e-6, 2.2e-5] kg·m²: 2.2e-5 > 4e-6 + 4.1e-6.");
   CHECK_FALSE(d.fix);
 
   Settings loose;
@@ -373,35 +379,45 @@ TEST_CASE("inertia-invalid: a non-positive-definite tensor reports its principal
   // [[2.2e-5, 3e-5], [3e-5, 2e-5]] has eigenvalues 2.1e-5 ± 3.0017e-5.
   const auto report = lint(gripper(R"(ixy="0" ixz="0" iyy="2.0e-5")", R"(ixy="3e-5" ixz="0" iyy="2.0e-5")"));
   REQUIRE(report.diagnostics.size() == 1);
-  CHECK(report.diagnostics[0].message ==
-        "inertia of link 'knuckle' (mass 0.0311 kg) is not positive definite: principal moments [-9.017e-6, 4.1e-6, "
-        "5.102e-5] kg·m²");
+  CHECK(report.diagnostics[0].message == "inertia of link 'knuckle' has a negative principal moment -9.017e-6 kg·m²");
+  REQUIRE(!report.diagnostics[0].notes.empty());
+  CHECK(report.diagnostics[0].notes[0].message ==
+        "Principal moments [-9.017e-6, 4.1e-6, 5.102e-5] kg·m² (mass 0.0311 kg); every moment of a real body is "
+        "positive.");
 }
 
 TEST_CASE("inertia-invalid: a massless or missing inertial on a moving link", "[rules]") {
   const auto zero = lint(gripper(R"(<mass value="0.0127"/>)", R"(<mass value="0"/>)"));
   REQUIRE(zero.diagnostics.size() == 1);
   CHECK(zero.diagnostics[0].span.line == 19);
-  CHECK(zero.diagnostics[0].message ==
-        "link 'finger' moves (child of revolute joint 'finger_tip_joint') but its mass is 0 kg: a moving body needs "
-        "a positive mass");
+  CHECK(zero.diagnostics[0].message == "link 'finger' moves but its mass is 0 kg");
+  REQUIRE(zero.diagnostics[0].notes.size() == 1);
+  CHECK(zero.diagnostics[0].notes[0].message ==
+        "It is part of the body moved by revolute joint 'finger_tip_joint', and no link of that body has a positive "
+        "mass.");
 
   // A root link without mass does not move: nothing to report.
   CHECK(lint(gripper(R"(<mass value="0.636"/>)", R"(<mass value="0"/>)")).diagnostics.empty());
 }
 
-TEST_CASE("drive-max-force: zero, placeholder, and the placeholder_force option; mimics are not driven", "[rules]") {
+TEST_CASE("drive-max-force: sentinels and placeholders are infos without a spec; mimics are not driven", "[rules]") {
   const std::string zero = gripper(kDrivenLimit, R"(<limit lower="0" upper="0.820305" effort="0" velocity="2.9"/>)");
   const auto report = lint(zero);
   REQUIRE(report.diagnostics.size() == 1);
-  CHECK(report.diagnostics[0].rule == "drive-max-force");
-  CHECK(report.diagnostics[0].severity == Severity::Warning);
-  CHECK(report.diagnostics[0].span.line == 27);
-  CHECK(report.diagnostics[0].span.column == 47);
-  CHECK(report.diagnostics[0].span.offset == offset_of(zero, R"(effort="0")", "0"));
+  const Diagnostic& sentinel = report.diagnostics[0];
+  CHECK(sentinel.rule == "drive-max-force");
+  CHECK(sentinel.severity == Severity::Info);
+  CHECK(sentinel.span.line == 27);
+  CHECK(sentinel.span.column == 47);
+  CHECK(sentinel.span.offset == offset_of(zero, R"(effort="0")", "0"));
+  // No [drives] table and no spec: the joint is not called driven.
+  CHECK(sentinel.message == "effort 0 N·m of revolute joint 'finger_joint' is a sentinel: unbounded in Isaac Sim, zero elsewhere");
+  REQUIRE(sentinel.notes.size() == 1);
+  CHECK(sentinel.notes[0].message.find("Isaac Sim's URDF importer reads effort ≤ 0 as no limit") == 0);
 
   CHECK(lint(gripper(kMimicLimit, R"(<limit lower="-0.820305" upper="0" effort="0" velocity="2.9"/>)")).diagnostics.empty());
 
+  // 1000 alone on the driven joint (the mimic says 4): neither ≥ placeholder_force nor repeated.
   const std::string thousand =
       gripper(kDrivenLimit, R"(<limit lower="0" upper="0.820305" effort="1000" velocity="2.9"/>)");
   CHECK(lint(thousand).diagnostics.empty());
@@ -409,9 +425,20 @@ TEST_CASE("drive-max-force: zero, placeholder, and the placeholder_force option;
   settings.rule_options["drive-max-force"]["placeholder_force"] = 1000.0;
   const auto placeholder = lint(thousand, settings);
   REQUIRE(placeholder.diagnostics.size() == 1);
-  CHECK(placeholder.diagnostics[0].message ==
-        "driven revolute joint 'finger_joint' has effort limit 1000 N·m, a placeholder (≥ 1000): the drive is "
-        "effectively unbounded; set it from the robot's spec");
+  CHECK(placeholder.diagnostics[0].severity == Severity::Info);
+  CHECK(placeholder.diagnostics[0].message == "effort 1000 N·m of revolute joint 'finger_joint' looks like a placeholder");
+  CHECK(placeholder.diagnostics[0].notes.at(0).message ==
+        "At or above placeholder_force 1000, the bound is effectively no bound.");
+
+  // The same round 1000 on the mimic too: the ros-industrial pattern, found without the option.
+  const std::string both = gripper(kMimicLimit, R"(<limit lower="-0.820305" upper="0" effort="1000" velocity="2.9"/>)");
+  std::string repeated = both;
+  repeated.replace(repeated.find(R"(effort="24")"), 11, R"(effort="1000")");
+  const auto pattern = lint(repeated);
+  REQUIRE(pattern.diagnostics.size() == 1);
+  CHECK(pattern.diagnostics[0].message == "effort 1000 N·m of revolute joint 'finger_joint' looks like a placeholder");
+  CHECK(pattern.diagnostics[0].notes.at(0).message ==
+        "The same round 1000 is on 1 other joint of the file: a value written for every joint, not a motor's rating.");
 }
 
 TEST_CASE("severity overrides change only the named rules", "[rules]") {
@@ -425,7 +452,7 @@ TEST_CASE("severity overrides change only the named rules", "[rules]") {
   CHECK(report.diagnostics[1].severity == Severity::Error);
   const auto plain = lint(text, only({"units-angle-degrees", "drive-max-force"}));
   CHECK(plain.diagnostics.at(0).severity == Severity::Error);
-  CHECK(plain.diagnostics.at(1).severity == Severity::Warning);
+  CHECK(plain.diagnostics.at(1).severity == Severity::Info);  // effort 0: a sentinel, without a spec
 }
 
 TEST_CASE("selection: --select and --ignore globs over check and reader rules", "[rules]") {
@@ -484,7 +511,7 @@ TEST_CASE("structure rules: undefined links and mimic references name the right 
   REQUIRE(undefined.size() == 1);
   CHECK(undefined[0].span.line == 30);
   CHECK(undefined[0].span.column == 19);
-  CHECK(undefined[0].message == "parent link 'palm' of revolute joint 'finger_tip_joint' is not defined in the file");
+  CHECK(undefined[0].message == "parent link 'palm' of revolute joint 'finger_tip_joint' is not defined");
 
   const std::string chain_text =
       gripper(kMimic, R"(<mimic joint="finger_tip_joint" multiplier="1" offset="0"/>)");

@@ -10,7 +10,8 @@
 
 #include "formats/urdf/urdf_reader.h"
 #include "formats/urdf/urdfdom_check.h"
-#include "formats/urdf/xml_scanner.h"
+#include "formats/xml/xml_scanner.h"
+#include "pipeline/urdf_verdict.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -28,7 +29,7 @@ std::vector<fs::path> urdfs_under(const fs::path& dir) {
 }
 
 struct Verdicts {
-  bool asset_lint_rejects = false;  // parse-error or urdf-invalid
+  bool asset_lint_rejects = false;  // parse-error, urdf-invalid or an undefined link
   bool urdf_invalid = false;
   bool urdfdom_rejects = false;
   bool urdfdom_ran = false;
@@ -41,9 +42,8 @@ Verdicts compare(const std::string& name, const std::string& text) {
   v.urdfdom_ran = urdf::urdfdom_runs() != before;
   for (const auto& d : r.diagnostics) {
     if (d.rule == "urdf-invalid") v.urdf_invalid = true;
-    if (d.rule == "urdf-invalid" || d.rule == "parse-error") v.asset_lint_rejects = true;
   }
-  v.asset_lint_rejects = v.asset_lint_rejects || !r.usable;
+  v.asset_lint_rejects = rejects_as_urdfdom_would(r);
   v.urdfdom_rejects = !urdf::urdfdom_errors(text).empty();
   return v;
 }
@@ -52,8 +52,8 @@ Verdicts compare(const std::string& name, const std::string& text) {
 // element removed: what makes urdfdom reject (missing effort, a bad number, a repeated
 // name, a joint whose child is its parent, ...) and what does not.
 std::vector<std::string> mutants(const std::string& text, std::size_t max_attributes) {
-  const urdf::XmlScan scan = urdf::scan_xml(text);
-  std::vector<std::pair<const urdf::XmlStartTag*, const urdf::XmlAttributeSpan*>> attributes;
+  const xml::XmlScan scan = xml::scan_xml(text);
+  std::vector<std::pair<const xml::XmlStartTag*, const xml::XmlAttributeSpan*>> attributes;
   for (const auto& tag : scan.tags)
     for (const auto& a : tag.attributes) attributes.emplace_back(&tag, &a);
   std::vector<std::string> out;

@@ -181,7 +181,9 @@ TEST_CASE("compose: missing, binary and outside-root layers are notes and are sk
   CHECK(s.diagnostics[0].message.find("'missing.usda' cannot be read") != std::string::npos);
   CHECK(s.diagnostics[0].span.line == 3);
   CHECK(s.diagnostics[0].span.column == 15);
-  CHECK(s.diagnostics[1].message.find("outside the checked directory tree 'a/b'") != std::string::npos);
+  CHECK(s.diagnostics[1].message == "layer '../outside.usda' is outside the checked tree; skipped");
+  REQUIRE(s.diagnostics[1].notes.size() == 1);
+  CHECK(s.diagnostics[1].notes[0].message.starts_with("the checked tree is 'a/b' "));
   CHECK(s.diagnostics[2].message.find("'crate.usd' is a binary USD file") != std::string::npos);
   CHECK(s.diagnostics[3].message.find("'mesh.usdc' is a binary USD file") != std::string::npos);
   CHECK(s.diagnostics[4].span.line == 6);  // the reference to the same missing file, at its own literal

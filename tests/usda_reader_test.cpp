@@ -112,7 +112,9 @@ def Xform "robot" (
 TEST_CASE("usd reader: revolute joint with drive, PhysX joint values, limits", "[usd][reader]") {
   ReadResult r = read_text(kRobot);
   REQUIRE(r.usable);
-  CHECK(r.diagnostics.empty());
+  // J1's mimic has no finite limits (±inf): the only finding, from the reader.
+  REQUIRE(r.diagnostics.size() == 1);
+  CHECK(r.diagnostics[0].rule == "mimic-limits-required");
   const Asset& a = r.asset;
   CHECK(a.format == SourceFormat::Usda);
   CHECK(a.robot_name.text == "robot");
@@ -265,7 +267,7 @@ def PhysicsRevoluteJoint "m" (
     prepend apiSchemas = ["PhysxMimicJointAPI:transZ"]
 )
 {
-    float drive:angular:physics:damping = 0
+    float drive:angular:physics:damping = 5000
     float drive:angular:physics:stiffness = 0
     float physxMimicJoint:transZ:gearing = 1
     float physxMimicJoint:rotZ:gearing = 1
@@ -285,18 +287,21 @@ def PhysicsRevoluteJoint "m" (
   CHECK(r.diagnostics[0].severity == Severity::Warning);
   CHECK(r.diagnostics[0].span.line == 7);
   CHECK(r.diagnostics[0].message ==
-        "'PhysxMimicJointAPI:transZ' on '/m': the mimic joint instance must be rotX, rotY or rotZ; PhysX silently "
-        "ignores 'transZ', so this joint is not coupled");
+        "'PhysxMimicJointAPI:transZ' on '/m': not a mimic instance, so the joint is not coupled");
+  CHECK(r.diagnostics[0].notes.at(0).message ==
+        "A mimic joint instance must be rotX, rotY or rotZ; PhysX silently ignores 'transZ'.");
   CHECK(r.diagnostics[1].rule == "stale-schema-attribute");
   CHECK(r.diagnostics[1].severity == Severity::Info);
   CHECK(r.diagnostics[1].span.line == 10);
-  CHECK(r.diagnostics[1].message ==
-        "'drive:angular:physics:damping', 'drive:angular:physics:stiffness' are authored on '/m' but "
-        "PhysicsDriveAPI:angular is removed by `delete apiSchemas`: PhysX ignores them");
+  // The zeroed stiffness under `delete apiSchemas` is harmless and left out (issue 15).
+  CHECK(r.diagnostics[1].message == "PhysicsDriveAPI:angular on 'm' is deleted: PhysX ignores its attribute");
+  REQUIRE(r.diagnostics[1].notes.size() == 2);
+  CHECK(r.diagnostics[1].notes[0].message ==
+        "'drive:angular:physics:damping' is authored on '/m', but PhysicsDriveAPI:angular is removed by "
+        "`delete apiSchemas`.");
   CHECK(r.diagnostics[2].span.line == 13);
-  CHECK(r.diagnostics[2].message ==
-        "'physxMimicJoint:rotZ:gearing' is authored on '/m' but PhysxMimicJointAPI:rotZ is not applied: PhysX ignores it");
-  CHECK(r.diagnostics[3].message.find("PhysxJointAPI is not applied") != std::string::npos);
+  CHECK(r.diagnostics[2].message == "PhysxMimicJointAPI:rotZ on 'm' is not applied: PhysX ignores its attribute");
+  CHECK(r.diagnostics[3].message == "PhysxJointAPI on 'm' is not applied: PhysX ignores its attribute");
 }
 
 TEST_CASE("usd reader: lint_text dispatches .usda and reports parse errors", "[usd][reader]") {
@@ -389,10 +394,11 @@ TEST_CASE("usd reader: the Robotiq configuration layer composes its three layers
     stale += d.rule == "stale-schema-attribute";
     unresolved += d.rule == "layer-unresolved";
   }
-  CHECK(stale == 5);
+  CHECK(stale == 0);  // Robotiq's zeroed drive values under `delete apiSchemas` are harmless (issue 15)
   CHECK(unresolved == 6);  // the binary .usd mesh parts
 
-  // The rules see the composed model: every mimic joint's maxJointVelocity 10000 is reported.
+  // The rules see the composed model: every mimic joint's maxJointVelocity 10000 is reported,
+  // as an info (far above the 146 deg/s the gearing demands), its removal an unsafe fix.
   std::vector<Diagnostic> findings;
   for (const Rule* rule : rules::checks()) {
     Reporter reporter(rule->info(), findings);
@@ -404,7 +410,9 @@ TEST_CASE("usd reader: the Robotiq configuration layer composes its three layers
     ++mimic_velocity;
     CHECK(a.source(d.span.file).path().ends_with("Robotiq_2F_85_physics_parallel_grip.usda"));
     CHECK(text_of(r, d.span) == "10000");
+    CHECK(d.severity == Severity::Info);
     REQUIRE(d.fix);
+    CHECK(d.fix->applicability == Applicability::Unsafe);
     CHECK(d.fix->edits.size() == 1);
     CHECK(std::string(text_of(r, Span{d.fix->edits[0].file, d.fix->edits[0].offset, d.fix->edits[0].length, 1, 1}))
               .find("float physxJoint:maxJointVelocity = 10000\n") != std::string::npos);
@@ -471,4 +479,220 @@ TEST_CASE("usd reader: the guide's gripper fixture carries the guide's numbers",
   CHECK(layered.asset.source(layered.asset.scene.timesteps_per_second->span.file).path().ends_with("robotiq_2f85_config.usda"));
   const Link* base = layered.asset.find_link("/robotiq_2f85/base_link");
   CHECK(layered.asset.source(base->inertial->mass.span.file).path().ends_with("robotiq_2f85_physics.usda"));
+}
+
+namespace {
+
+std::string joint_stage(const std::string& joints, const std::string& mpu = "1") {
+  return R"(#usda 1.0
+(
+    metersPerUnit = )" + mpu + R"(
+)
+
+def Xform "robot" (
+    prepend apiSchemas = ["PhysicsArticulationRootAPI"]
+)
+{
+    def Xform "base" (
+        prepend apiSchemas = ["PhysicsRigidBodyAPI"]
+    )
+    {
+    }
+)" + joints + "}\n";
+}
+
+}  // namespace
+
+TEST_CASE("usd reader: a revolute joint reads only PhysicsDriveAPI:angular, a prismatic one only :linear",
+          "[usd][reader][facts]") {
+  ReadResult r = read_text(joint_stage(R"(
+    def PhysicsRevoluteJoint "rot" (
+        prepend apiSchemas = ["PhysicsDriveAPI:rotZ"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = 0
+        float physics:upperLimit = 47
+        float drive:rotZ:physics:stiffness = 5700
+    }
+
+    def PhysicsPrismaticJoint "slide" (
+        prepend apiSchemas = ["PhysicsDriveAPI:angular", "PhysicsDriveAPI:linear"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float drive:angular:physics:stiffness = 10
+        float drive:linear:physics:stiffness = 200
+    }
+
+    def PhysicsJoint "d6" (
+        prepend apiSchemas = ["PhysicsDriveAPI:rotX"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float drive:rotX:physics:stiffness = 3
+    }
+)"));
+  REQUIRE(r.usable);
+  const Joint* rot = r.asset.find_joint("/robot/rot");
+  REQUIRE(rot);
+  CHECK_FALSE(rot->drive);  // undriven: the rotZ drive is dead and not linted
+  const Joint* slide = r.asset.find_joint("/robot/slide");
+  REQUIRE(slide);
+  REQUIRE(slide->drive);
+  CHECK(slide->drive->instance == "linear");
+  CHECK(slide->drive->stiffness->value == 200);
+  const Joint* d6 = r.asset.find_joint("/robot/d6");
+  REQUIRE(d6);
+  REQUIRE(d6->drive);  // axis instances are what a D6 joint reads
+  CHECK(d6->drive->instance == "rotX");
+
+  REQUIRE(r.diagnostics.size() == 2);
+  CHECK(r.diagnostics[0].rule == "drive-instance-ignored");
+  CHECK(r.diagnostics[0].message ==
+        "PhysicsDriveAPI:rotZ on revolute joint '/robot/rot' drives nothing (PhysX reads only :angular)");
+  CHECK(text_of(r, r.diagnostics[0].span) == "\"PhysicsDriveAPI:rotZ\"");
+  REQUIRE(r.diagnostics[0].notes.size() == 2);
+  CHECK(r.diagnostics[0].notes[0].message.starts_with("The joint is undriven:"));
+  CHECK(r.diagnostics[1].message ==
+        "PhysicsDriveAPI:angular on prismatic joint '/robot/slide' drives nothing (PhysX reads only :linear)");
+  CHECK(r.diagnostics[1].notes[0].message.starts_with("The joint is driven by PhysicsDriveAPI:linear alone:"));
+}
+
+TEST_CASE("usd reader: PhysxJointAxisAPI replaces PhysxJointAPI's armature and max velocity as a whole",
+          "[usd][reader][facts]") {
+  ReadResult r = read_text(joint_stage(R"(
+    def PhysicsRevoluteJoint "axis_partial" (
+        prepend apiSchemas = ["PhysxJointAPI", "PhysxJointAxisAPI:angular"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = 0
+        float physics:upperLimit = 47
+        float physxJoint:maxJointVelocity = 146
+        float physxJoint:armature = 0.01
+        float physxJointAxis:angular:armature = 0.002
+    }
+
+    def PhysicsRevoluteJoint "joint_api_only" (
+        prepend apiSchemas = ["PhysxJointAPI"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = 0
+        float physics:upperLimit = 47
+        float physxJoint:maxJointVelocity = 146
+        float physxJoint:armature = 0.01
+    }
+)"));
+  REQUIRE(r.usable);
+  const Joint* partial = r.asset.find_joint("/robot/axis_partial");
+  REQUIRE(partial);
+  REQUIRE(partial->armature);
+  CHECK(partial->armature->value == Approx(0.002));
+  CHECK_FALSE(partial->velocity);  // the axis schema's own fallback, not PhysxJointAPI's 146
+  const Joint* plain = r.asset.find_joint("/robot/joint_api_only");
+  REQUIRE(plain);
+  CHECK(plain->armature->value == Approx(0.01));
+  CHECK(plain->velocity->authored == 146);
+}
+
+TEST_CASE("usd reader: mixed angular/linear mimic gearing is converted (degrees, metersPerUnit)", "[usd][reader][facts]") {
+  ReadResult r = read_text(joint_stage(R"(
+    def PhysicsPrismaticJoint "slide"
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = 0
+        float physics:upperLimit = 4
+    }
+
+    def PhysicsRevoluteJoint "wheel" (
+        prepend apiSchemas = ["PhysxMimicJointAPI:rotX"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = -360
+        float physics:upperLimit = 360
+        rel physxMimicJoint:rotX:referenceJoint = </robot/slide>
+        float physxMimicJoint:rotX:gearing = -90
+    }
+
+    def PhysicsPrismaticJoint "rack" (
+        prepend apiSchemas = ["PhysxMimicJointAPI:rotX"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = -10
+        float physics:upperLimit = 10
+        rel physxMimicJoint:rotX:referenceJoint = </robot/wheel>
+        float physxMimicJoint:rotX:gearing = 0.5
+    }
+)", "0.01"));
+  REQUIRE(r.usable);
+  CHECK(r.diagnostics.empty());
+  const Joint* wheel = r.asset.find_joint("/robot/wheel");
+  REQUIRE(wheel);
+  // q_wheel = 90 deg per cm of slide = (π/2 rad) / 0.01 m = 157.08 rad/m.
+  CHECK(wheel->mimic->multiplier.unit == Unit::UsdGearingDegreePerDistance);
+  CHECK_THAT(wheel->mimic->multiplier.value, WithinRel(std::numbers::pi / 2 / 0.01, 1e-9));
+  const Joint* rack = r.asset.find_joint("/robot/rack");
+  REQUIRE(rack);
+  // q_rack = −0.5 cm per degree of wheel = −0.005 m / (π/180 rad) = −0.2865 m/rad.
+  CHECK(rack->mimic->multiplier.unit == Unit::UsdGearingDistancePerDegree);
+  CHECK_THAT(rack->mimic->multiplier.value, WithinRel(-0.005 * 180 / std::numbers::pi, 1e-9));
+}
+
+TEST_CASE("usd reader: a mimic with a revolute reference without finite limits is refused", "[usd][reader][facts]") {
+  ReadResult r = read_text(joint_stage(R"(
+    def PhysicsRevoluteJoint "leader"
+    {
+        rel physics:body0 = </robot/base>
+        float physics:upperLimit = 47
+    }
+
+    def PhysicsRevoluteJoint "follower" (
+        prepend apiSchemas = ["PhysxMimicJointAPI:rotX"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = 0
+        float physics:upperLimit = 47
+        rel physxMimicJoint:rotX:referenceJoint = </robot/leader>
+    }
+)"));
+  REQUIRE(r.diagnostics.size() == 1);
+  const Diagnostic& d = r.diagnostics[0];
+  CHECK(d.rule == "mimic-limits-required");
+  CHECK(d.severity == Severity::Error);
+  CHECK(d.message == "mimic '/robot/follower' follows revolute joint without finite limits: omni.physx refuses it");
+  CHECK(d.notes[0].message.starts_with("'/robot/leader' is a revolute joint whose physics:lowerLimit / "
+                                       "physics:upperLimit are not both finite"));
+  CHECK(text_of(r, d.span) == "\"PhysxMimicJointAPI:rotX\"");
+}
+
+TEST_CASE("usd reader: PhysxDrivePerformanceEnvelopeAPI is read with its drive", "[usd][reader][facts]") {
+  ReadResult r = read_text(joint_stage(R"(
+    def PhysicsRevoluteJoint "j" (
+        prepend apiSchemas = ["PhysicsDriveAPI:angular", "PhysxDrivePerformanceEnvelopeAPI:angular"]
+    )
+    {
+        rel physics:body0 = </robot/base>
+        float physics:lowerLimit = 0
+        float physics:upperLimit = 47
+        float drive:angular:physics:stiffness = 3
+        float drive:angular:physics:maxForce = 26
+        float physxDrivePerformanceEnvelope:angular:maxActuatorVelocity = 180
+        float physxDrivePerformanceEnvelope:angular:velocityDependentResistance = 0.5
+    }
+)"));
+  REQUIRE(r.usable);
+  CHECK(r.diagnostics.empty());  // its attributes are not stale: the schema is applied
+  const Joint* j = r.asset.find_joint("/robot/j");
+  REQUIRE(j);
+  REQUIRE(j->drive);
+  REQUIRE(j->drive->envelope);
+  CHECK_THAT(j->drive->envelope->max_actuator_velocity->value, WithinRel(std::numbers::pi, 1e-9));
+  CHECK_THAT(j->drive->envelope->velocity_dependent_resistance->value, WithinRel(0.5 * 180 / std::numbers::pi, 1e-9));
+  CHECK_FALSE(j->drive->envelope->speed_effort_gradient);
+  CHECK(text_of(r, j->drive->envelope->span) == "\"PhysxDrivePerformanceEnvelopeAPI:angular\"");
 }

@@ -1,8 +1,8 @@
 #include <catch2/catch.hpp>
 
-#include "formats/urdf/xml_scanner.h"
+#include "formats/xml/xml_scanner.h"
 
-using namespace assetlint::urdf;
+using namespace assetlint::xml;
 
 TEST_CASE("the scanner records exact attribute value ranges", "[urdf]") {
   const std::string text = "<?xml version=\"1.0\"?>\n<robot name='r'>\n  <limit lower=\"0\"  upper = \" 47 \"/>\n</robot>\n";

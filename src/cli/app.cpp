@@ -10,9 +10,11 @@
 #include "cli/report_writer.h"
 #include "cli/rule_pages.h"
 #include "commands/check.h"
+#include "commands/compare_command.h"
 #include "commands/exit_status.h"
 #include "commands/fix.h"
 #include "commands/stdin.h"
+#include "commands/tune.h"
 #include "config/resolver.h"
 #include "engine/file_system.h"
 #include "pipeline/discovery.h"
@@ -39,13 +41,21 @@ bool use_color(const Options& options, bool out_is_terminal) {
 
 // Checks or fixes the files the options name (or standard input), writing the report to
 // `report_out`.
-int run_files(const Options& options, std::istream& in, std::ostream& out, std::ostream& err,
+int run_files(const Options& options, bool compare, std::istream& in, std::ostream& out, std::ostream& err,
               std::ostream& report_out, bool out_is_terminal) {
   config::SettingsResolver resolver(overrides_from(options), options.config_path.empty()
                                                                  ? std::nullopt
                                                                  : std::optional(options.config_path));
   const commands::WriteReport write_report =
       report_writer(options, use_color(options, out_is_terminal), resolver, report_out);
+  if (compare) {
+    if (auto error = resolver.prepare(options.paths)) {
+      err << "asset-lint: error: " << error->to_string() << "\n";
+      return kExitError;
+    }
+    return commands::run_compare(options.paths, {options.map_pairs, options.rtol, options.fix_side, options.fix},
+                                 resolver.as_function(), out, err, write_report);
+  }
   if (options.paths == std::vector<std::string>{"-"}) {
     if (auto error = resolver.prepare({options.stdin_filename})) {
       err << "asset-lint: error: " << error->to_string() << "\n";
@@ -74,7 +84,7 @@ int run_files(const Options& options, std::istream& in, std::ostream& out, std::
 }
 
 int run_check_command(const std::vector<std::string>& args, std::istream& in, std::ostream& out,
-                      std::ostream& err, bool out_is_terminal) {
+                      std::ostream& err, bool out_is_terminal, bool compare = false) {
   ParsedOptions parsed = parse_options(args, out, err);
   if (!parsed.options) return parsed.exit_code;
   Options& options = *parsed.options;
@@ -98,7 +108,7 @@ int run_check_command(const std::vector<std::string>& args, std::istream& in, st
     }
   }
   const int code =
-      run_files(options, in, out, err, options.output_file.empty() ? out : report_file, out_is_terminal);
+      run_files(options, compare, in, out, err, options.output_file.empty() ? out : report_file, out_is_terminal);
   if (!options.output_file.empty() && !report_file) {
     err << fmt::format("asset-lint: error: cannot write '{}'\n", options.output_file);
     return kExitError;
@@ -112,6 +122,9 @@ int run_check_command(const std::vector<std::string>& args, std::istream& in, st
 int run(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err,
         bool out_is_terminal) {
   if (!args.empty() && args.front() == "rule") return run_rule_command(args, out, err);
+  if (!args.empty() && args.front() == "compare")
+    return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
+  if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "check")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal);
   return run_check_command(args, in, out, err, out_is_terminal);

@@ -13,7 +13,7 @@ namespace assetlint::cli {
 namespace {
 
 void add_options(CLI::App& app, Options& o) {
-  app.add_option("paths", o.paths, "Files or directories to check (directories: every *.urdf and *.usda below)");
+  app.add_option("paths", o.paths, "Files or directories to check (directories: every *.urdf, *.usda, *.mjcf and MJCF *.xml below)");
   app.add_option("--select", o.select, "Only these rules (comma list, globs such as 'mimic-*')")
       ->delimiter(',')
       ->allow_extra_args(false);
@@ -41,19 +41,25 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--position-iterations", o.position_iterations,
                  "Solver position iterations, when the asset authors none")
       ->check(CLI::Range(1u, 255u));
-  app.add_flag("--allow-outside-root", o.allow_outside_root,
-               "Let USD composition read layers outside the checked tree (the directory named, or the working "
-               "directory)");
+  app.add_option("--root", o.root,
+                 "The checked tree whose files USD composition may read (default: the file's git work tree, else "
+                 "the directory of its asset-lint.toml, else the directory named or the working directory)")
+      ->check(CLI::ExistingDirectory);
+  app.add_flag("--allow-outside-root", o.allow_outside_root, "Let USD composition read layers outside the checked tree");
   app.add_option("--max-file-size", o.max_file_mib,
                  "Files and layers larger than this many MiB are not read (an error names them; default 512)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 20));
   app.add_flag("--fix", o.fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", o.unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", o.diff, "Print a unified diff of what --fix would change; write nothing");
+  app.add_option("--map", o.map_pairs, "compare: pair a name of the first file with one of another (a=b)")
+      ->allow_extra_args(false);
+  app.add_option("--rtol", o.rtol, "compare: relative tolerance (default 1e-6)")->check(CLI::PositiveNumber);
+  app.add_option("--fix-side", o.fix_side, "compare: the file whose values --fix rewrites");
   app.add_flag("--list-rules", o.list_rules, "List every rule and exit");
   app.add_flag("--version", o.version, "Print the version and exit");
   app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
       "Exit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
       "remain, 2 usage, configuration or I/O error.\n"
       "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
@@ -126,6 +132,7 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   overrides.timesteps_per_second = o.timesteps_per_second;
   if (o.position_iterations) overrides.position_iterations = static_cast<double>(*o.position_iterations);
   overrides.allow_outside_root = o.allow_outside_root;
+  overrides.root = o.root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : o.paths)
     if (std::error_code ec; std::filesystem::is_directory(path, ec)) overrides.trees.push_back(path);

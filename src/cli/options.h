@@ -26,9 +26,14 @@ struct Options {
   std::string config_path;
   bool allow_outside_root = false;
   std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read
+  std::string root;  // --root
   std::optional<double> timesteps_per_second;
   std::optional<unsigned> position_iterations;
   unsigned jobs = 1;
+  // asset-lint compare
+  std::vector<std::string> map_pairs;  // --map a=b
+  double rtol = 1e-6;
+  std::string fix_side;
 };
 
 // Parses `args` (after the command word). On --help prints the help to `out`; on a

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <thread>
 
@@ -20,6 +21,25 @@ struct Target {
   std::string path;
   fix::EditScope scope;
 };
+
+std::string canonical_path(const std::string& path) {
+  std::error_code ec;
+  const auto canonical = std::filesystem::weakly_canonical(path, ec);
+  return ec ? path : canonical.string();
+}
+
+// Which result writes each file: a layer composed into a checked stage is fixed in the
+// stage's context (its rate and configuration), once, even when it is also checked alone.
+// Maps a canonical path to the index of the result that owns it.
+std::map<std::string, std::size_t> file_owners(const std::vector<fix::FixResult>& results) {
+  std::map<std::string, std::size_t> owners;
+  for (int composed = 1; composed >= 0; --composed)  // stages' layers first, then files alone
+    for (std::size_t i = 0; i < results.size(); ++i)
+      for (const fix::FixedFile& file : results[i].files)
+        if ((canonical_path(file.path) != canonical_path(results[i].path)) == (composed == 1))
+          owners.try_emplace(canonical_path(file.path), i);
+  return owners;
+}
 
 std::string problems(std::size_t n) { return fmt::format("{} problem{}", n, n == 1 ? "" : "s"); }
 
@@ -75,7 +95,10 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
 
   bool any_diff = false;
   std::vector<FileReport> remaining;
-  for (fix::FixResult& result : results) {
+  const auto owners = file_owners(results);
+  std::vector<std::string> pending_relint;
+  for (std::size_t index = 0; index < results.size(); ++index) {
+    fix::FixResult& result = results[index];
     for (const auto& message : result.internal_errors) err << "asset-lint: internal error: " << message << "\n";
     for (const auto& message : result.notes) err << "asset-lint: note: " << message << "\n";
     if (result.error) {
@@ -84,6 +107,13 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
       if (!result.initial.error) remaining.push_back(std::move(result.initial));
       continue;
     }
+    // Files another result writes: left to it, and this file is judged again afterwards.
+    bool deferred = false;
+    std::erase_if(result.files, [&](const fix::FixedFile& file) {
+      const bool other = owners.at(canonical_path(file.path)) != index;
+      deferred = deferred || other;
+      return other;
+    });
     if (options.diff) {
       for (const fix::FixedFile& file : result.files) {
         out << fix::unified_diff(file.original, file.fixed, diff_label("a/", file.path), diff_label("b/", file.path));
@@ -102,14 +132,15 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
       }
       err << fmt::format("asset-lint: fixed {} in {}\n", problems(file.fixes), file.path);
     }
-    if (write_failed) {
-      // Report what is on disk now.
-      remaining.push_back(lint_file(result.path, settings(result.path)));
+    if (write_failed || deferred) {
+      // Report what is on disk now (the writer of a shared layer may come later).
+      pending_relint.push_back(result.path);
     } else {
       remaining.push_back(std::move(result.remaining));
     }
   }
 
+  for (const std::string& path : pending_relint) remaining.push_back(lint_file(path, settings(path)));
   const bool failed = !run_problems.errors.empty();
   if (options.diff) {
     if (!failed && !any_diff) err << "asset-lint: no fix applies; nothing to change\n";

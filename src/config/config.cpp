@@ -116,6 +116,10 @@ class Loader {
         const double n = number(node, k, 1.0, false);
         if (n != std::floor(n) || n > 255) fail(node, "'position_iterations' must be a whole number from 1 to 255");
         settings_.simulation.position_iterations = Configured<double>{n, origin(node)};
+      } else if (k == "velocity_iterations") {
+        const double n = number(node, k, 0.0, false);
+        if (n != std::floor(n) || n > 255) fail(node, "'velocity_iterations' must be a whole number from 0 to 255");
+        settings_.simulation.velocity_iterations = Configured<double>{n, origin(node)};
       } else if (k == "solver") settings_.simulation.solver = Configured<std::string>{choice(node, k, {"TGS", "PGS"}), origin(node)};
       else unknown(key, "simulation");
     }
@@ -132,6 +136,7 @@ class Loader {
       else if (k == "finger_speed_m_s") g.finger_speed_m_s = positive(node, k);
       else if (k == "stroke_m") g.stroke_m = positive(node, k);
       else if (k == "target_delta_deg") g.target_delta_deg = *positive(node, k);
+      else if (k == "torque_margin") g.torque_margin = positive(node, k);
       else if (k == "driven_joint") g.driven_joint = Configured<std::string>{string(node, k), origin(node)};
       else unknown(key, "gripper");
     }

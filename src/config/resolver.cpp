@@ -17,6 +17,7 @@ const Settings& SettingsResolver::load(const std::string& config_path, std::opti
   if (overrides_.position_iterations)
     settings->simulation.position_iterations = Configured<double>{*overrides_.position_iterations, "--position-iterations"};
   settings->trees = overrides_.trees;
+  settings->root = overrides_.root;
   settings->allow_outside_root = overrides_.allow_outside_root;
   return *by_config_.emplace(config_path, std::move(settings)).first->second;
 }

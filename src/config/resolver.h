@@ -21,6 +21,7 @@ struct CommandLineOverrides {
   std::optional<double> timesteps_per_second;
   std::optional<double> position_iterations;
   std::vector<std::string> trees;  // directories named on the command line, and the working directory
+  std::string root;                // --root: the checked tree for every file
   bool allow_outside_root = false;
 };
 

@@ -30,6 +30,7 @@ struct Configured {
 struct SimulationSettings {
   std::optional<Configured<double>> timesteps_per_second;
   std::optional<Configured<double>> position_iterations;
+  std::optional<Configured<double>> velocity_iterations;
   std::optional<Configured<std::string>> solver;  // "TGS" or "PGS"
 };
 
@@ -42,6 +43,9 @@ struct GripperSpec {
   std::optional<Configured<double>> finger_speed_m_s;
   std::optional<Configured<double>> stroke_m;
   Configured<double> target_delta_deg{5.0, "default"};
+  // Round the per-joint torque up to a multiple of this many N·m (the guide: 3.33 → 4);
+  // unset = no rounding. `tune --torque-margin` overrides it.
+  std::optional<Configured<double>> torque_margin;
   std::optional<Configured<std::string>> driven_joint;
 };
 
@@ -73,8 +77,11 @@ struct Settings {
   GripperSpec gripper;
   std::map<std::string, DriveSettings, std::less<>> drives;
   std::string config_path;  // the asset-lint.toml in effect; empty when none
-  // The directory trees the user named: composed USD layers are read only inside the
-  // one that holds the checked file (its own directory when none does).
+  // The checked tree, whose files composed USD layers may read (config/project_root.h):
+  // `root` when set (--root), else the file's git work tree, else the directory of its
+  // asset-lint.toml, else the deepest of `trees` (the directories named on the command
+  // line and the working directory) that holds it.
+  std::string root;
   std::vector<std::string> trees;
   bool allow_outside_root = false;
   std::map<std::string, Severity, std::less<>> severity_overrides;

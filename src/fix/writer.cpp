@@ -133,4 +133,19 @@ std::optional<std::string> write_atomically(const std::string& path, const std::
   return std::nullopt;
 }
 
+std::optional<std::string> create_atomically(const std::string& path, const std::string& text) {
+  const auto fail = [&](const std::string& why) { return fmt::format("cannot create '{}': {}", path, why); };
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  TempFile temp;
+  if (!temp.create(dir, fs::path(path).filename().string()))
+    return fail(fmt::format("cannot create a temporary file in '{}' ({})", dir.string(), errno_text(errno)));
+  if (!write_all(temp.fd(), text) || ::fchmod(temp.fd(), 0644) != 0 || ::fsync(temp.fd()) != 0 || temp.close() != 0)
+    return fail(fmt::format("writing the temporary file '{}' failed ({})", temp.path(), errno_text(errno)));
+  // link() refuses an existing target: a file created meanwhile is never overwritten.
+  if (::link(temp.path().c_str(), path.c_str()) != 0)
+    return fail(errno == EEXIST ? std::string("it exists now") : errno_text(errno));
+  return std::nullopt;  // the temporary name is unlinked by TempFile
+}
+
 }  // namespace assetlint::fix

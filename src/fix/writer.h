@@ -26,6 +26,11 @@ struct WriteOptions {
 std::optional<std::string> write_atomically(const std::string& path, const std::string& expected_original,
                                             const std::string& text, const WriteOptions& options = {});
 
+// Creates the file at `path` with `text`, atomically: a temporary file in the same
+// directory, fsynced, then linked to `path`, which fails (leaving nothing behind) when
+// `path` exists by then. Returns nullopt on success, otherwise a message naming the file.
+std::optional<std::string> create_atomically(const std::string& path, const std::string& text);
+
 inline std::optional<std::string> write_fixed_file(const FixedFile& file, const WriteOptions& options = {}) {
   return write_atomically(file.path, file.original, file.fixed, options);
 }

@@ -1,5 +1,7 @@
 #include "formats/file_kind.h"
 
+#include "formats/mjcf/mjcf_reader.h"
+
 #include <algorithm>
 #include <filesystem>
 
@@ -17,6 +19,19 @@ FileKind file_kind(const std::string& path) {
   if (ext == ".usda") return FileKind::Usda;
   if (ext == ".usd") return FileKind::Usd;
   if (ext == ".usdc" || ext == ".usdz") return FileKind::BinaryUsd;
+  if (ext == ".mjcf" || ext == ".xml") return FileKind::Mjcf;
+  return FileKind::Unsupported;
+}
+
+FileKind file_kind(const std::string& path, std::string_view text) {
+  const FileKind kind = file_kind(path);
+  if (kind != FileKind::Mjcf || extension_of(path) != ".xml" || mjcf::looks_like_mjcf(text)) return kind;
+  const std::string_view robot = "<robot";
+  for (std::size_t at = text.find('<'); at != std::string_view::npos; at = text.find('<', at + 1)) {
+    const char next = at + 1 < text.size() ? text[at + 1] : '\0';
+    if (next == '?' || next == '!') continue;
+    return text.substr(at, robot.size()) == robot ? FileKind::Urdf : FileKind::Unsupported;
+  }
   return FileKind::Unsupported;
 }
 

@@ -60,7 +60,7 @@ std::optional<SuppressionComment> parse_directive(std::string_view body, std::si
 CommentSyntax comment_syntax_for(std::string_view path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".urdf" || ext == ".xml" ? CommentSyntax::Xml : CommentSyntax::Usda;
+  return ext == ".urdf" || ext == ".xml" || ext == ".mjcf" ? CommentSyntax::Xml : CommentSyntax::Usda;
 }
 
 std::vector<SuppressionComment> find_suppressions(std::string_view text, CommentSyntax syntax) {

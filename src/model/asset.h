@@ -22,7 +22,7 @@ struct TransparentHash {
   std::size_t operator()(std::string_view text) const { return std::hash<std::string_view>{}(text); }
 };
 
-enum class SourceFormat { Urdf, Usda };
+enum class SourceFormat { Urdf, Usda, Mjcf };
 
 struct Name {
   std::string text;
@@ -39,12 +39,16 @@ struct Inertial {
   // USD: physics:mass = 0 or an all-zero diagonalInertia means "let PhysX derive it".
   bool mass_authored = true;
   bool inertia_authored = true;
+  // USD without physics:centerOfMass: PhysX computes the COM from colliders; `com` is then
+  // the body origin standing in, not a fact.
+  bool com_authored = true;
 };
 
 struct Link {
   Name name;
   Span span;  // the element or prim
   std::optional<Inertial> inertial;
+  bool kinematic = false;  // USD physics:kinematicEnabled: moved by the user, not the solver
 };
 
 enum class JointType { Revolute, Continuous, Prismatic, Fixed, Floating, Planar, Spherical, Generic };
@@ -56,6 +60,15 @@ inline bool is_single_dof(JointType t) {
 
 enum class DriveType { Force, Acceleration };
 
+// USD PhysxDrivePerformanceEnvelopeAPI:<instance>: the drive's effort limit falls with
+// speed, |F| ≤ maxForce − velocityDependentResistance·|v|, and is 0 at maxActuatorVelocity.
+struct PerformanceEnvelope {
+  OptQuantity max_actuator_velocity;          // rad/s or m/s; unset = inf
+  OptQuantity velocity_dependent_resistance;  // N·m·s/rad or N·s/m; unset = 0
+  OptQuantity speed_effort_gradient;          // as written (deg/s per N·m); unset = 0
+  Span span;                                  // the schema application
+};
+
 struct Drive {
   OptQuantity stiffness;   // N·m/rad (angular) or N/m (linear)
   OptQuantity damping;     // N·m·s/rad or N·s/m
@@ -65,6 +78,7 @@ struct Drive {
   Span span;               // where the drive is declared (schema application or config table)
   std::string instance;    // USD multiple-apply instance ("angular", "linear", "rotX", ...)
   std::string origin;      // where a drive the file does not hold came from ("asset-lint.toml:14")
+  std::optional<PerformanceEnvelope> envelope;
 };
 
 struct Mimic {
@@ -105,6 +119,7 @@ struct Joint {
   OptQuantity velocity;    // max joint velocity: rad/s or m/s
   OptQuantity joint_damping;   // URDF <dynamics damping>
   OptQuantity joint_friction;
+  OptQuantity joint_stiffness;  // MJCF passive spring toward springref: N·m/rad or N/m
   OptQuantity armature;    // kg·m² or kg
   std::optional<Motor> motor;
   std::optional<Drive> drive;
@@ -118,7 +133,10 @@ struct Joint {
 
 struct Scene {
   OptQuantity timesteps_per_second;  // 1/s
-  OptQuantity position_iterations;   // count
+  OptQuantity position_iterations;   // count: the articulation's solverPositionIterationCount
+  OptQuantity velocity_iterations;   // count: the articulation's solverVelocityIterationCount
+  OptQuantity min_position_iterations;  // the scene's clamps on every actor's position iterations
+  OptQuantity max_position_iterations;
   std::string solver;                // "TGS" / "PGS"; empty = unknown
   Span solver_span;
 };

@@ -22,15 +22,24 @@ double factor(Unit unit) {
     case Unit::UsdOffsetMeter:
       return -1.0;
     case Unit::UsdOffsetDegree:
+    case Unit::UsdGearingDegreePerDistance:
       return -1.0 / kDegreesPerRadian;
+    case Unit::UsdGearingDistancePerDegree:
+      return -kDegreesPerRadian;
     default:
       return 1.0;
   }
 }
 }  // namespace
 
-double to_model_units(double authored, Unit unit) { return authored * factor(unit); }
-double from_model_units(double model_value, Unit unit) { return model_value / factor(unit); }
+double to_model_units(double authored, Unit unit) {
+  if (unit == Unit::SecondsPerStep) return 1.0 / authored;
+  return authored * factor(unit);
+}
+double from_model_units(double model_value, Unit unit) {
+  if (unit == Unit::SecondsPerStep) return 1.0 / model_value;
+  return model_value / factor(unit);
+}
 
 Unit model_unit(Unit unit) {
   switch (unit) {
@@ -42,6 +51,9 @@ Unit model_unit(Unit unit) {
     case Unit::UsdGearing: return Unit::None;
     case Unit::UsdOffsetDegree: return Unit::Radian;
     case Unit::UsdOffsetMeter: return Unit::Meter;
+    case Unit::SecondsPerStep: return Unit::PerSecond;
+    case Unit::UsdGearingDegreePerDistance: return Unit::RadianPerMeter;
+    case Unit::UsdGearingDistancePerDegree: return Unit::MeterPerRadian;
     default: return unit;
   }
 }
@@ -70,6 +82,11 @@ std::string_view unit_symbol(Unit unit) {
     case Unit::UsdGearing: return "";
     case Unit::UsdOffsetDegree: return "deg";
     case Unit::UsdOffsetMeter: return "m";
+    case Unit::SecondsPerStep: return "s";
+    case Unit::UsdGearingDegreePerDistance: return "deg/m";
+    case Unit::UsdGearingDistancePerDegree: return "m/deg";
+    case Unit::RadianPerMeter: return "rad/m";
+    case Unit::MeterPerRadian: return "m/rad";
   }
   return "";
 }

@@ -28,9 +28,18 @@ enum class Unit {
   UsdGearing,                   // USD mimic gearing: q + g·q_ref + offset = 0, so multiplier = −g
   UsdOffsetDegree,              // USD angular mimic offset (degrees, sign flipped like gearing)
   UsdOffsetMeter,               // USD linear mimic offset (sign flipped)
+  SecondsPerStep,               // MJCF <option timestep>: the model value is the rate, 1 / timestep
+  // Mixed mimic gearing (omni.physx InternalMimicJoint.cpp): an angular mimic of a linear
+  // joint writes deg per distance, a linear mimic of an angular joint distance per deg;
+  // sign flipped like UsdGearing. The stage's metersPerUnit goes into Quantity::scale.
+  UsdGearingDegreePerDistance,
+  UsdGearingDistancePerDegree,
+  RadianPerMeter,
+  MeterPerRadian,
 };
 
-// Value in the model's unit = authored value × factor (+ sign for the USD mimic convention).
+// Value in the model's unit = authored value × factor (+ sign for the USD mimic convention;
+// a step length becomes its rate).
 double to_model_units(double authored, Unit unit);
 // Inverse of to_model_units: what to write in a file whose literal is in `unit`.
 double from_model_units(double model_value, Unit unit);

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "physics/drive.h"
+#include "physics/sizing.h"
 #include "util/numbers.h"
 
 namespace assetlint::physics {
@@ -18,21 +21,55 @@ const Joint* spec_joint(const Asset& asset, const Settings& settings) {
   return only;
 }
 
+double round_up_torque(double torque, const GripperSpec& spec) {
+  if (!spec.torque_margin) return torque;
+  const double margin = spec.torque_margin->value;
+  // A torque already on the grid (within rounding noise) stays where it is.
+  return std::ceil(torque / margin * (1 - 1e-12)) * margin;
+}
+
 std::optional<RequiredForce> required_force(const Asset& asset, const Settings& settings, const Joint& driven) {
   const GripperSpec& g = settings.gripper;
-  if (!g.payload_kg || !g.friction || !g.lever_arm_m) return std::nullopt;
+  if (!g.payload_kg || !g.friction) return std::nullopt;
+  const auto coupled = coupled_joints(asset, driven);
+  bool any_angular = false;
+  for (const Joint* joint : coupled) any_angular = any_angular || is_angular(joint->type);
+  if (any_angular && !g.lever_arm_m) return std::nullopt;
+
   RequiredForce f;
   f.grip_force = g.payload_kg->value * g.gravity.value / g.friction->value;
   f.per_finger = f.grip_force / 2.0;
-  f.per_joint = f.per_finger * g.lever_arm_m->value;
-  f.joints = coupled_joints(asset, driven).size();
-  f.required = f.per_joint * static_cast<double>(f.joints);
-  f.derivation = fmt::format(
-      "{} kg × {} m/s² / μ {} = {} N grip, {} N per finger × {} m lever arm = {} N·m per joint × {} joint{} "
-      "driven through '{}' = {} N·m",
-      format_number(g.payload_kg->value), format_number(g.gravity.value), format_number(g.friction->value),
-      format_number(f.grip_force, 4), format_number(f.per_finger, 4), format_number(g.lever_arm_m->value),
-      format_number(f.per_joint, 3), f.joints, f.joints == 1 ? "" : "s", driven.name.text, format_number(f.required, 3));
+  f.joints = coupled.size();
+  f.unit = is_angular(driven.type) ? Unit::NewtonMeter : Unit::Newton;
+  f.steps.push_back(fmt::format("Grip: {} kg × {} m/s² / μ {} = {} N, {} N per finger.", format_number(g.payload_kg->value),
+                                format_number(g.gravity.value), format_number(g.friction->value),
+                                format_number(f.grip_force, 4), format_number(f.per_finger, 4)));
+  if (any_angular) {
+    f.per_joint_torque = f.per_finger * g.lever_arm_m->value;
+    f.rounded_torque = round_up_torque(f.per_joint_torque, g);
+    std::string step = fmt::format("Per revolute joint: {} N × {} m lever arm = {} N·m", format_number(f.per_finger, 4),
+                                   format_number(g.lever_arm_m->value), format_number(f.per_joint_torque, 3));
+    if (g.torque_margin)
+      step += fmt::format(", rounded up to a multiple of torque_margin {} N·m ({}): {} N·m", format_number(g.torque_margin->value),
+                          g.torque_margin->origin, format_number(f.rounded_torque, 4));
+    f.steps.push_back(step + ".");
+  }
+  bool any_linear = false;
+  for (const Joint* joint : coupled) {
+    // The driven joint moves with gearing 1; a mimic's load reaches it through its gearing.
+    const double gearing = joint == &driven || !joint->mimic ? 1.0 : std::fabs(joint->mimic->multiplier.value);
+    const double own = is_angular(joint->type) ? f.rounded_torque : f.per_finger;
+    any_linear = any_linear || !is_angular(joint->type);
+    f.gearing_sum += gearing;
+    f.required += gearing * own;
+  }
+  if (any_linear) f.steps.push_back(fmt::format("Per prismatic finger: the per-finger force itself, {} N.", format_number(f.per_finger, 4)));
+  const std::size_t mimics = f.joints - 1;
+  f.steps.push_back(fmt::format("'{}' drives {} joint{} (itself{}), Σ|gearing| = {}: it needs {} {}.", driven.name.text,
+                                f.joints, f.joints == 1 ? "" : "s",
+                                mimics == 0 ? "" : fmt::format(" and {} mimic{}", mimics, mimics == 1 ? "" : "s"),
+                                format_number(f.gearing_sum, 4), format_number(f.required, 4), unit_symbol(f.unit)));
+  for (const std::string& step : f.steps) f.derivation += (f.derivation.empty() ? "" : " ") + step;
   return f;
 }
 
@@ -42,7 +79,7 @@ std::optional<RequiredVelocity> required_velocity(const Settings& settings, cons
   const double range = driven.upper->value - driven.lower->value;
   if (range <= 0) return std::nullopt;
   RequiredVelocity v;
-  v.close_time = g.stroke_m->value / 2.0 / g.finger_speed_m_s->value;
+  v.close_time = close_time(g.stroke_m->value, g.finger_speed_m_s->value);
   v.velocity = range / v.close_time;
   const char* unit = is_angular(driven.type) ? "rad" : "m";
   v.derivation = fmt::format("{} m stroke / 2 per finger at {} m/s closes in {} s; {} {} range / {} s = {} {}/s",

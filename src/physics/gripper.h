@@ -2,6 +2,7 @@
 // The guide's derivations from a gripper's spec sheet (PHYSICS.md §2–3).
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/settings.h"
 #include "model/asset.h"
@@ -12,15 +13,26 @@ namespace assetlint::physics {
 // asset's only driven joint (non-mimic, single degree of freedom, not fixed).
 const Joint* spec_joint(const Asset& asset, const Settings& settings);
 
+// A per-joint torque rounded up to a multiple of `[gripper] torque_margin` (N·m), as the
+// guide rounds 3.33 N·m up to 4; unchanged when the margin is unset. `tune --torque-margin`
+// sets the same key, so both go through here.
+double round_up_torque(double torque, const GripperSpec& spec);
+
 struct RequiredForce {
-  double grip_force = 0;       // N, both fingers: m·g/μ
-  double per_finger = 0;       // N
-  double per_joint = 0;        // N·m: per finger × lever arm
-  std::size_t joints = 0;      // the drive moves itself plus its mimics
-  double required = 0;         // N·m on the driven joint
-  std::string derivation;      // "5 kg × 10 m/s² / μ 0.3 = 166.7 N; …"
+  double grip_force = 0;         // N, both fingers: m·g/μ
+  double per_finger = 0;         // N
+  double per_joint_torque = 0;   // N·m: per finger × lever arm (revolute joints of the set)
+  double rounded_torque = 0;     // N·m: per_joint_torque rounded up to the torque margin
+  std::size_t joints = 0;        // the drive moves itself plus its mimics
+  double gearing_sum = 0;        // Σ|gearing| over the set (the driven joint counts 1)
+  double required = 0;           // on the driven joint: N·m (revolute) or N (prismatic)
+  Unit unit = Unit::NewtonMeter;
+  std::vector<std::string> steps;  // the derivation, one sentence each
+  std::string derivation;          // the steps joined
 };
-// Needs payload_kg, friction and lever_arm_m.
+// Needs payload_kg and friction, and lever_arm_m when a revolute joint is in the coupled
+// set. A prismatic finger needs the per-finger force itself (no lever arm). The driven
+// joint needs Σ |gearing_j| · (per-joint force or torque of j) over itself and its mimics.
 std::optional<RequiredForce> required_force(const Asset& asset, const Settings& settings, const Joint& driven);
 
 struct RequiredVelocity {

@@ -1,6 +1,11 @@
 #include "physics/inertia.h"
 
 #include <Eigen/Eigenvalues>
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "util/numbers.h"
 
 namespace assetlint::physics {
 
@@ -20,6 +25,69 @@ double inertia_about_axis(const Inertial& inertial, const Eigen::Isometry3d& joi
   const double about_com = direction.dot(inertial.inertia * direction);
   const double distance = axis_distance(inertial, joint_in_link, axis);
   return about_com + inertial.mass.value * distance * distance;
+}
+
+bool pasted_tensor(const Eigen::Matrix3d& m) {
+  return m(0, 0) != 0 && m(0, 0) == m(1, 1) && m(0, 0) == m(2, 2) && m(0, 0) == m(0, 1) && m(0, 0) == m(0, 2) &&
+         m(0, 0) == m(1, 2);
+}
+
+std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& link) {
+  std::vector<Eigen::Vector3d> frames;
+  for (const Joint& joint : asset.joints) {
+    if (joint.parent.text == link.name.text) frames.push_back(joint.frame_in_link[0].translation());
+    if (joint.child.text == link.name.text) frames.push_back(joint.frame_in_link[1].translation());
+  }
+  return frames;
+}
+
+std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames) {
+  const double mass = inertial.mass.value;
+  if (!inertial.mass_authored || !inertial.inertia_authored || !inertial.com_authored || !(mass > 0)) return std::nullopt;
+  const Eigen::Vector3d moments = principal_moments(inertial.inertia);
+  if (!(moments[0] > 0)) return std::nullopt;  // not a rigid body's tensor: inertia-invalid says so
+  Gyration g;
+  g.largest = std::sqrt(moments[2] / mass);
+  g.smallest = std::sqrt(moments[0] / mass);
+  if (joint_frames.size() >= 2)
+    for (const Eigen::Vector3d& frame : joint_frames) g.spread = std::max(g.spread, (frame - inertial.com).norm());
+  g.from_size = g.spread > 0;
+  g.bound = g.from_size ? std::max(kGyrationSizeFactor * g.spread, kGyrationFloor) : kGyrationFixedBound;
+  if (g.largest > g.bound) g.verdict = Gyration::Verdict::TooLarge;
+  else if (mass >= kGyrationMinMass && g.largest < kGyrationMinRadius) g.verdict = Gyration::Verdict::TooSmall;
+  return g;
+}
+
+std::string Gyration::bound_text() const {
+  if (verdict == Verdict::TooSmall)
+    return fmt::format("the fixed lower bound {} m for a link of {} kg or more", format_number(kGyrationMinRadius),
+                       format_number(kGyrationMinMass));
+  if (!from_size)
+    return fmt::format("the fixed bound {} m (the link has fewer than two distinct joint frames: the model gives no size)",
+                       format_number(kGyrationFixedBound));
+  return fmt::format("the bound {} m = max({} × {} m, {} m), {} m being the farthest joint frame on the link from its COM",
+                     format_number(bound, 3), format_number(kGyrationSizeFactor), format_number(spread, 3),
+                     format_number(kGyrationFloor), format_number(spread, 3));
+}
+
+std::string inertia_doubt(const Asset& asset, const Link& link) {
+  if (!link.inertial) return {};
+  const Inertial& in = *link.inertial;
+  const Eigen::Matrix3d& t = in.inertia;
+  if (pasted_tensor(t))
+    return fmt::format("link '{}' has a pasted placeholder tensor (all six entries {})", link.name.text,
+                       format_number(t(0, 0), 4));
+  if (in.mass_authored && in.mass.value > 0 && t(0, 0) == in.mass.value && t(1, 1) == in.mass.value &&
+      t(2, 2) == in.mass.value)
+    return fmt::format("link '{}' has mass and moments all {}: placeholder values", link.name.text,
+                       format_number(in.mass.value, 4));
+  const auto g = judge_gyration(in, joint_frames_on(asset, link));
+  if (!g || g->verdict == Gyration::Verdict::Plausible) return {};
+  if (g->verdict == Gyration::Verdict::TooSmall)
+    return fmt::format("link '{}' has a radius of gyration √(I/m) of {} m, below {} m: a point mass typed in",
+                       link.name.text, format_number(g->largest, 3), format_number(kGyrationMinRadius));
+  return fmt::format("link '{}' has a radius of gyration √(I/m) of {} m, above the {} m the link could have",
+                     link.name.text, format_number(g->largest, 3), format_number(g->bound, 3));
 }
 
 }  // namespace assetlint::physics

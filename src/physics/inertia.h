@@ -2,6 +2,9 @@
 // Inertia helpers (PHYSICS.md §2): principal moments, and a link's inertia about a
 // joint axis shifted with the parallel-axis theorem.
 #include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "model/asset.h"
 
@@ -17,5 +20,41 @@ double inertia_about_axis(const Inertial& inertial, const Eigen::Isometry3d& joi
 
 // Distance (m) from the link's COM to the joint axis line.
 double axis_distance(const Inertial& inertial, const Eigen::Isometry3d& joint_in_link, const Eigen::Vector3d& axis);
+
+// ixx = iyy = izz = ixy = ixz = iyz ≠ 0: one value typed into every field (rank one).
+bool pasted_tensor(const Eigen::Matrix3d& inertia);
+
+// Whether a link's radius of gyration √(I/m) fits the link. Every point of a body lies within
+// its extent R of the COM, so √(I_max/m) ≤ R. The model gives R only as the spread of the
+// joint frames on the link (two or more: it spans at least between them); the bound allows
+// kGyrationSizeFactor × that spread, and never less than kGyrationFloor, because a link
+// reaches past its joints. Without two joint frames apart from the COM the fixed bound kGyrationFixedBound holds.
+// A radius under kGyrationMinRadius on kGyrationMinMass or more is a point mass typed in.
+inline constexpr double kGyrationSizeFactor = 3.0;
+inline constexpr double kGyrationFloor = 0.1;        // m
+inline constexpr double kGyrationFixedBound = 0.5;   // m
+inline constexpr double kGyrationMinRadius = 0.002;  // m
+inline constexpr double kGyrationMinMass = 0.01;     // kg
+
+struct Gyration {
+  enum class Verdict { Plausible, TooLarge, TooSmall };
+  Verdict verdict = Verdict::Plausible;
+  double largest = 0;   // √(I_max / m), m
+  double smallest = 0;  // √(I_min / m), m
+  double spread = 0;    // farthest joint frame on the link from its COM, m (0: no size from two or more frames)
+  double bound = 0;     // the largest plausible radius, m
+  bool from_size = false;  // bound = max(factor × spread, floor); else the fixed bound
+  std::string bound_text() const;  // "3 × 0.114 m, the farthest joint frame on the link from its COM" / …
+};
+
+// The joint frames on a link, in the link frame: where it is a joint's parent or child.
+std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& link);
+
+// Needs an authored, positive-definite tensor, a positive mass and an authored COM.
+std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames);
+
+// Why the guide's formulas cannot trust a link's tensor, or empty: a pasted placeholder (all
+// six entries equal, or mass equal to each moment) or a radius of gyration that does not fit.
+std::string inertia_doubt(const Asset& asset, const Link& link);
 
 }  // namespace assetlint::physics

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "engine/file_system.h"
 #include "formats/file_kind.h"
 
 namespace assetlint {
@@ -18,6 +19,12 @@ std::string head_of(const fs::path& path) {
   char buffer[8] = {};
   in.read(buffer, sizeof buffer);
   return std::string(buffer, static_cast<std::size_t>(in.gcount()));
+}
+
+bool mjcf_text(const fs::path& path) {
+  std::string error;
+  auto text = disk().read(path.string(), error);
+  return text && file_kind(path.string(), *text) == FileKind::Mjcf;
 }
 
 struct Walk {
@@ -39,6 +46,10 @@ struct Walk {
         else out.binary_usd.push_back(spelled(path, cwd));
         break;
       case FileKind::BinaryUsd: out.binary_usd.push_back(spelled(path, cwd)); break;
+      case FileKind::Mjcf:
+        // A .xml is an asset only when its root is <mujoco> (not launch files, not URDFs named .xml).
+        if (extension_of(path.string()) != ".xml" || mjcf_text(path)) found.push_back(spelled(path, cwd));
+        break;
       case FileKind::Unsupported: break;
     }
   }

@@ -26,7 +26,8 @@ struct PathExpansion {
 std::string spelled(const std::filesystem::path& path, const std::filesystem::path& cwd);
 
 // Files as given (spelled as above); directories searched recursively (hidden directories skipped) for
-// *.urdf, *.usda and text .usd files (a `#usda` header). A directory or entry that cannot
+// *.urdf, *.usda, text .usd files (a `#usda` header), *.mjcf and *.xml whose root is
+// <mujoco>. A directory or entry that cannot
 // be read is an error naming it; the rest of the walk goes on.
 PathExpansion expand_paths(const std::vector<std::string>& paths);
 

@@ -10,8 +10,10 @@
 #include <thread>
 
 #include "config/drive_overrides.h"
+#include "config/project_root.h"
 #include "engine/rule.h"
 #include "formats/file_kind.h"
+#include "formats/mjcf/mjcf_reader.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "pipeline/suppressions.h"
@@ -20,30 +22,16 @@
 namespace assetlint {
 namespace {
 
-// The deepest named tree that holds the file; empty (its own directory) when none does.
-std::string tree_of(const std::string& path, const std::vector<std::string>& trees) {
-  namespace fs = std::filesystem;
-  // Lexical paths, like the composer's own check: a tree named through a symlink keeps
-  // the files found through that symlink inside it.
-  std::error_code ec;
-  const fs::path file = fs::absolute(path, ec).lexically_normal();
-  std::string best;
-  for (const auto& tree : trees) {
-    const fs::path root = fs::absolute(tree, ec).lexically_normal();
-    const fs::path relative = file.lexically_relative(root);
-    const bool inside = !relative.empty() && *relative.begin() != "..";
-    if (inside && root.string().size() > best.size()) best = root.string();
-  }
-  return best;
-}
-
 ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const SourceFile> file,
                 const FileSystem& files, const Settings& settings) {
   switch (kind) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
+    case FileKind::Mjcf:
+      return mjcf::read_mjcf(std::move(file), files,
+                             mjcf::ReadOptions{config::checked_root(path, settings), settings.allow_outside_root});
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files,
-                             usda::ComposeOptions{tree_of(path, settings.trees), settings.allow_outside_root});
+                             usda::ComposeOptions{config::checked_root(path, settings), settings.allow_outside_root});
     default: break;
   }
   ReadResult unsupported;
@@ -58,21 +46,29 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
   });
 }
 
+// The reader for `path` (text USD is told from binary by its first bytes), or why none.
+std::optional<std::string> kind_of(const std::string& path, std::string_view text, FileKind& kind) {
+  kind = file_kind(path, text);
+  if (kind == FileKind::Usd) kind = usd_kind(text);
+  if (kind == FileKind::BinaryUsd)
+    return fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting with '#usda "
+                       "1.0')", path);
+  if (kind == FileKind::Unsupported && extension_of(path) == ".xml")
+    return std::string("not a robot model: the root element of this .xml file is neither <mujoco> nor <robot>");
+  if (kind == FileKind::Unsupported)
+    return fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda, text .usd, .mjcf and MJCF .xml "
+                       "files)", extension_of(path));
+  return std::nullopt;
+}
+
 }  // namespace
 
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
   FileReport report;
   report.path = path;
-  FileKind kind = file_kind(path);
-  if (kind == FileKind::Usd) kind = usd_kind(text);
-  if (kind == FileKind::BinaryUsd) {
-    report.error = fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting "
-                               "with '#usda 1.0')", path);
-    return report;
-  }
-  if (kind == FileKind::Unsupported) {
-    report.error = fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda and text .usd files)",
-                               extension_of(path));
+  FileKind kind;
+  if (auto why = kind_of(path, text, kind)) {
+    report.error = std::move(*why);
     return report;
   }
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
@@ -99,6 +95,16 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   return report;
 }
 
+std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
+                                     const FileSystem& files) {
+  LoadedAsset loaded = load_asset(path, settings, files);
+  if (loaded.error) {
+    error = std::move(*loaded.error);
+    return std::nullopt;
+  }
+  return std::move(loaded.read);
+}
+
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files) {
   std::string error;
   std::optional<std::string> text = files.read(path, error);
@@ -109,6 +115,24 @@ FileReport lint_file(const std::string& path, const Settings& settings, const Fi
     return report;
   }
   return lint_text(path, std::move(*text), settings, files);
+}
+
+LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files) {
+  LoadedAsset loaded;
+  std::string error;
+  std::optional<std::string> text = files.read(path, error);
+  if (!text) {
+    loaded.error = fmt::format("cannot read '{}': {}", path, error);
+    return loaded;
+  }
+  FileKind kind;
+  if (auto why = kind_of(path, *text, kind)) {
+    loaded.error = std::move(*why);
+    return loaded;
+  }
+  loaded.read = read(path, kind, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);
+  if (loaded.read.usable) config::apply_drive_settings(loaded.read.asset, settings);
+  return loaded;
 }
 
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs) {

@@ -10,6 +10,7 @@
 #include "engine/diagnostic.h"
 #include "engine/file_system.h"
 #include "engine/settings.h"
+#include "formats/read_result.h"
 #include "model/source.h"
 
 namespace assetlint {
@@ -23,12 +24,26 @@ struct FileReport {
   const SourceFile& source(FileId id) const { return *sources.at(id); }
 };
 
+// Reads a file into the model (with the configuration's [drives.*] applied) without
+// running the rules; nullopt with `error` set when it cannot be read or is not a model.
+std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
+                                     const FileSystem& files = disk());
+
 // Reads and lints one file (through `files`, the disk by default).
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files = disk());
 // Lints text as if it were the file `path` (its extension picks the reader).
 // Other files it refers to (USD layers) are read through `files`.
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings,
                      const FileSystem& files = disk());
+// Reads one file into the model the rules check (the configuration's [drives] applied),
+// for commands that reason about one asset (tune, simulate). `error` when the file cannot
+// be read or is of an unsupported type; otherwise `read.usable` says whether the reader
+// could build the model (its diagnostics say why not).
+struct LoadedAsset {
+  ReadResult read;
+  std::optional<std::string> error;
+};
+LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files = disk());
 // Lints files in parallel on `jobs` threads; the reports keep the order of `paths`.
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs);
 // The same, with each file's own settings (its asset-lint.toml).

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "report/grouping.h"
 #include "report/report_util.h"
 #include "report/summary.h"
 
@@ -21,6 +22,21 @@ std::string plural(std::size_t n, std::string_view word) {
   return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
 }
 
+// "  = the same on 23 more: 'palm' (31:17), 'thumb_base' (64:17), …": the places of the
+// findings a printed one stands for.
+std::string same_on_more(const std::vector<Diagnostic>& diagnostics, const FindingGroup& group) {
+  constexpr std::size_t kListed = 6;
+  std::string places;
+  for (std::size_t k = 0; k < group.others.size() && k < kListed; ++k) {
+    const Diagnostic& d = diagnostics[group.others[k]];
+    const std::string name = first_quoted(d.message);
+    places += fmt::format("{}{}{}:{}{}", k ? ", " : "", name.empty() ? "" : "'" + name + "' (", d.span.line,
+                          d.span.column, name.empty() ? "" : ")");
+  }
+  if (group.others.size() > kListed) places += ", …";
+  return fmt::format("and the same on {} more: {}", group.others.size(), places);
+}
+
 }  // namespace
 
 void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options,
@@ -29,7 +45,8 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
   const char* dim = options.color ? "\033[2m" : "";
   const char* reset = options.color ? "\033[0m" : "";
   for (const auto& report : reports) {
-    for (const auto& d : report.diagnostics) {
+    for (const FindingGroup& group : group_identical(report.diagnostics)) {
+      const Diagnostic& d = report.diagnostics[group.first];
       const std::string& path = d.span.file < report.sources.size() ? report.source(d.span.file).path() : report.path;
       std::string marker;
       if (d.fix && d.fix->applicability == Applicability::Safe) marker = " (fixable)";
@@ -46,6 +63,8 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
           out << fmt::format("  {}note:{} {}\n", bold, reset, one_line(note.message));
       }
       if (d.fix) out << fmt::format("  {}help:{} {}\n", bold, reset, one_line(help_line(*d.fix)));
+      if (!group.others.empty())
+        out << fmt::format("  {}={} {}\n", bold, reset, one_line(same_on_more(report.diagnostics, group)));
     }
   }
   if (!options.show_summary) return;

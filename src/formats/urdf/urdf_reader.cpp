@@ -5,11 +5,11 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <unordered_map>
+#include <memory>
 
 #include "formats/urdf/urdfdom_check.h"
 #include "formats/urdf/urdfdom_verdict.h"
-#include "formats/urdf/xml_scanner.h"
+#include "formats/xml/xml_document.h"
 #include "rules/reader_rules.h"
 #include "util/numbers.h"
 
@@ -28,27 +28,16 @@ class UrdfReader {
   }
 
   ReadResult run() {
-    const std::string_view text = file_.view();
-    scan_ = scan_xml(text);
-    for (const auto& problem : scan_.problems) parse_error(file_.span(kFile, problem.offset, problem.length), problem.message);
-    if (!scan_.recoverable) return fail();
-
-    const std::string_view document = text.substr(scan_.document_begin, scan_.document_end - scan_.document_begin);
-    tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
-    if (doc.Parse(document.data(), document.size()) != tinyxml2::XML_SUCCESS) {
-      const int line_in_document = std::max(1, doc.ErrorLineNum());
-      const std::uint32_t line = file_.position(scan_.document_begin).line + static_cast<std::uint32_t>(line_in_document) - 1;
-      parse_error(file_.span(kFile, file_.line_start(line), 0), fmt::format("not well-formed XML: {}", doc.ErrorStr()));
-      return fail();
-    }
-    index_elements(doc.RootElement());
-    const XMLElement* robot = doc.RootElement();
-    if (!robot || std::string_view(robot->Name()) != "robot") {
+    doc_ = std::make_unique<xml::XmlDocument>(file_, kFile);
+    for (const auto& error : doc_->errors()) parse_error(error.span, error.message);
+    const XMLElement* robot = doc_->root();
+    if (!robot) return fail();
+    if (std::string_view(robot->Name()) != "robot") {
       parse_error(element_span(robot),
-                  fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot ? robot->Name() : ""));
+                  fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot->Name()));
       return fail();
     }
-    if (may_hold_xacro(document) && find_xacro(robot)) return fail();
+    if (may_hold_xacro(doc_->document()) && find_xacro(robot)) return fail();
 
     result_.asset.robot_name = name_of(robot);
     result_.asset.robot_span = element_span(robot);
@@ -58,8 +47,8 @@ class UrdfReader {
       else if (tag == "joint") read_joint(el);
     }
     result_.asset.index_names();
-    if (!urdfdom_needed(document, robot)) return std::move(result_);
-    check_with_urdfdom(document);
+    if (!urdfdom_needed(robot)) return std::move(result_);
+    check_with_urdfdom(doc_->document());
     return std::move(result_);
   }
 
@@ -74,41 +63,9 @@ class UrdfReader {
                                    std::move(message), std::nullopt, {}});
   }
 
-  // Pairs each tinyxml2 element with the scanner's start tag: both list elements in
-  // document order, so the n-th element of a pre-order walk is the n-th start tag.
-  void index_elements(const XMLElement* root) {
-    std::size_t next = 0;
-    bool consistent = true;
-    auto visit = [&](auto&& self, const XMLElement* el) -> void {
-      if (!el) return;
-      if (next < scan_.tags.size() && scan_.tags[next].name == el->Name()) tags_[el] = &scan_.tags[next];
-      else consistent = false;
-      ++next;
-      for (const XMLElement* c = el->FirstChildElement(); c; c = c->NextSiblingElement()) self(self, c);
-    };
-    visit(visit, root);
-    if (!consistent) tags_.clear();  // positions fall back to line starts
-  }
-
-  Span element_span(const XMLElement* el) const {
-    if (!el) return file_.span(kFile, scan_.document_begin, 0);
-    if (auto it = tags_.find(el); it != tags_.end())
-      return file_.span(kFile, it->second->offset, it->second->end - it->second->offset);
-    const auto line = file_.position(scan_.document_begin).line + static_cast<std::uint32_t>(el->GetLineNum()) - 1;
-    return file_.span(kFile, file_.line_start(line), 0);
-  }
-
-  // The span of an attribute's value without surrounding spaces.
-  Span value_span(const XMLElement* el, std::string_view attr) const {
-    auto it = tags_.find(el);
-    if (it == tags_.end()) return element_span(el);
-    const XmlAttributeSpan* a = it->second->attribute(attr);
-    if (!a) return element_span(el);
-    const std::string_view raw = file_.view().substr(a->value_offset, a->value_length);
-    const std::string_view trimmed = trim(raw);
-    const std::size_t lead = trimmed.empty() ? 0 : static_cast<std::size_t>(trimmed.data() - raw.data());
-    return file_.span(kFile, a->value_offset + lead, trimmed.size());
-  }
+  Span element_span(const XMLElement* el) const { return doc_->element_span(el); }
+  Span value_span(const XMLElement* el, std::string_view attr) const { return doc_->value_span(el, attr); }
+  Span attribute_span(const XMLElement* el, std::string_view attr) const { return doc_->attribute_span(el, attr); }
 
   Name name_of(const XMLElement* el) const {
     const char* name = el->Attribute("name");
@@ -128,15 +85,6 @@ class UrdfReader {
     Quantity q = Quantity::from_authored(*value, unit, span);
     q.declaration = attribute_span(el, attr);
     return q;
-  }
-
-  // The whole `name="value"` text of an attribute.
-  Span attribute_span(const XMLElement* el, std::string_view attr) const {
-    auto it = tags_.find(el);
-    if (it == tags_.end()) return element_span(el);
-    const XmlAttributeSpan* a = it->second->attribute(attr);
-    if (!a) return element_span(el);
-    return file_.span(kFile, a->name_offset, a->value_offset + a->value_length + 1 - a->name_offset);
   }
 
   std::optional<Eigen::Vector3d> vector3(const XMLElement* el, const char* attr) {
@@ -313,33 +261,55 @@ class UrdfReader {
 
   // urdfdom runs unless its verdict is certainly "accepted" (src/formats/urdf/urdfdom_verdict.h):
   // then it would add nothing.
-  bool urdfdom_needed(std::string_view document, const XMLElement* robot) const {
-    if (!scan_.problems.empty() || tags_.empty()) return true;
-    const RawAttribute raw = [this](const XMLElement* el, std::string_view attr) -> std::optional<std::string_view> {
-      auto it = tags_.find(el);
-      if (it == tags_.end()) return std::nullopt;
-      const XmlAttributeSpan* a = it->second->attribute(attr);
-      if (!a) return std::nullopt;
-      return file_.view().substr(a->value_offset, a->value_length);
-    };
-    return !urdfdom_certainly_accepts(document, robot, raw);
+  bool urdfdom_needed(const XMLElement* robot) const {
+    if (!doc_->errors().empty() || !doc_->positions_known()) return true;
+    const RawAttribute raw = [this](const XMLElement* el, std::string_view attr) { return doc_->raw_value(el, attr); };
+    return !urdfdom_certainly_accepts(doc_->document(), robot, raw);
   }
 
-  // Runs urdfdom and places each of its complaints on the joint or link it names.
+  // Runs urdfdom and reports its complaints as one finding: the first is the cause, the rest
+  // (urdfdom's cascade, e.g. "Could not parse collision element" after an unknown geometry)
+  // become located notes.
   void check_with_urdfdom(std::string_view document) {
-    std::vector<std::pair<std::size_t, std::string>> seen;
     std::vector<std::string> messages = urdfdom_errors(document);
     // urdfdom's generic epilogue says nothing the specific messages before it do not.
-    if (messages.size() > 1)
-      std::erase(messages, std::string("joint xml is not initialized correctly"));
+    if (messages.size() > 1) std::erase(messages, std::string("joint xml is not initialized correctly"));
+    // An undefined link is structure-undefined-link's finding, which says that urdfdom rejects it.
+    // Only where asset-lint misses the link too: urdfdom does not trim names, so "palm " is
+    // undefined to it but not to us, and then urdfdom's message is the only finding.
+    std::erase_if(messages, [this](const std::string& m) {
+      if (!m.starts_with("Failed to build tree: parent link [") && !m.starts_with("Failed to build tree: child link ["))
+        return false;
+      const std::size_t open = m.find('['), close = m.find(']', open);
+      if (close == std::string::npos) return false;
+      const std::string name = m.substr(open + 1, close - open - 1);
+      return trim(name) == name && !result_.asset.find_link(name);
+    });
+    std::vector<std::pair<Span, std::string>> located;
     for (const auto& message : messages) {
       const Span span = locate_message(message);
       // urdfdom repeats a message once per element it rejects without naming it.
-      if (std::find(seen.begin(), seen.end(), std::pair{span.offset, message}) != seen.end()) continue;
-      seen.emplace_back(span.offset, message);
-      result_.diagnostics.push_back({std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span,
-                                     fmt::format("urdfdom rejects the file: {}", message), std::nullopt, {}});
+      const bool repeated = std::any_of(located.begin(), located.end(), [&](const auto& seen) {
+        return seen.first.offset == span.offset && seen.second == message;
+      });
+      if (!repeated) located.emplace_back(span, message);
     }
+    if (located.empty()) return;
+    const auto& [span, first] = located.front();
+    Diagnostic finding{std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span, {}, std::nullopt, {}};
+    const std::string primary = fmt::format("urdfdom rejects the file: {}", first);
+    if (primary.size() <= kMaxPrimaryMessage) {
+      finding.message = primary;
+    } else {
+      finding.message = "urdfdom rejects the file";
+      finding.note(fmt::format("urdfdom: {}", first));
+    }
+    if (located.size() > 1)
+      finding.note(fmt::format("urdfdom then reports {} more problem{}, most often consequences of the first:",
+                               located.size() - 1, located.size() == 2 ? "" : "s"));
+    for (std::size_t i = 1; i < located.size(); ++i) finding.note(located[i].first, located[i].second);
+    finding.note("ROS tools, check_urdf, Gazebo's URDF path and the simulator importers built on urdfdom refuse it.");
+    result_.diagnostics.push_back(std::move(finding));
   }
 
   Span locate_message(std::string_view message) const {
@@ -370,21 +340,20 @@ class UrdfReader {
       if (const Link* l = result_.asset.find_link(name)) return l->name.span;
     // An element the model leaves out (a joint of unknown type): its name attribute.
     for (auto name : names)
-      for (const auto& tag : scan_.tags)
-        if (const XmlAttributeSpan* a = tag.attribute("name");
+      for (const auto& tag : doc_->scan().tags)
+        if (const xml::XmlAttributeSpan* a = tag.attribute("name");
             a && trim(file_.view().substr(a->value_offset, a->value_length)) == name)
           return file_.span(kFile, a->value_offset, a->value_length);
     // A quoted element name ("Unknown geometry type 'capsule'"): its first occurrence.
     for (auto name : names)
-      for (const auto& tag : scan_.tags)
+      for (const auto& tag : doc_->scan().tags)
         if (tag.name == name) return file_.span(kFile, tag.offset, tag.end - tag.offset);
     return result_.asset.robot_span;
   }
 
   const SourceFile& file_;
   ReadResult result_;
-  XmlScan scan_;
-  std::unordered_map<const XMLElement*, const XmlStartTag*> tags_;
+  std::unique_ptr<xml::XmlDocument> doc_;
 };
 
 }  // namespace

@@ -95,7 +95,7 @@ class Composer {
     const std::string key = normalize(root->path());
     stage_.sources.push_back(std::move(root));
     stage_.layers.emplace_back();
-    by_path_[key] = Loaded{0, {}};
+    by_path_[key] = Loaded{0, {}, Severity::Info, {}};
     parse(0);
     if (!stage_.usable) return std::move(stage_);
     stage_.root_stack = stack(0);
@@ -113,15 +113,20 @@ class Composer {
     std::optional<FileId> id;
     std::string problem;  // why it was not read
     Severity severity = Severity::Info;
+    std::string detail;   // a note: how to read it after all
   };
   struct Container {
     const std::vector<Prim>* prims;
     SpecRef spec;  // the template for child specs (prim is the parent)
   };
 
-  void report(const Span& span, Severity severity, std::string message) {
-    if (!reported_.insert({span.file, span.offset}).second) return;
+  // `scope`: the prim whose opinions the arc would have brought ("" for a subLayer: the whole stage).
+  // Null when the arc was reported already.
+  Diagnostic* report(const Span& span, Severity severity, std::string message, std::string_view scope) {
+    if (!reported_.insert({span.file, span.offset}).second) return nullptr;
+    stage_.skipped.push_back({stage_.diagnostics.size(), std::string(scope)});
     stage_.diagnostics.push_back({std::string(rules::kLayerUnresolved.id), severity, span, std::move(message), std::nullopt, {}});
+    return &stage_.diagnostics.back();
   }
 
   void parse(FileId id) {
@@ -136,10 +141,10 @@ class Composer {
   }
 
   // The layer an asset path names, read and parsed once; nullopt (reported) when it cannot be used.
-  std::optional<FileId> resolve(FileId from, std::string_view asset, const Span& span) {
+  std::optional<FileId> resolve(FileId from, std::string_view asset, const Span& span, std::string_view scope) {
     const std::string shown(asset);
     if (asset.find("://") != std::string_view::npos) {
-      report(span, Severity::Info, fmt::format("layer '{}' is not a local file; skipped", shown));
+      report(span, Severity::Info, fmt::format("layer '{}' is not a local file; skipped", shown), scope);
       return std::nullopt;
     }
     fs::path path(asset);
@@ -148,33 +153,45 @@ class Composer {
     auto it = by_path_.find(key);
     if (it == by_path_.end()) it = by_path_.emplace(key, load(key)).first;
     if (!it->second.id) {
-      report(span, it->second.severity, fmt::format("layer '{}' {}", shown, it->second.problem));
+      Diagnostic* d = report(span, it->second.severity, fmt::format("layer '{}' {}", shown, it->second.problem), scope);
+      if (d && !it->second.detail.empty()) d->note(it->second.detail);
       return std::nullopt;
     }
     return it->second.id;
+  }
+
+  // The checked tree as messages show it: relative to the working directory when it is
+  // below it, so that reports do not carry machine paths.
+  std::string shown_root() const {
+    if (root_dir_.empty()) return ".";
+    std::error_code ec;
+    const fs::path relative = fs::path(root_dir_abs_).lexically_relative(fs::current_path(ec));
+    if (!ec && !relative.empty() && *relative.begin() != "..") return relative.generic_string();
+    return root_dir_.generic_string();
   }
 
   Loaded load(const std::string& key) {
     if (!options_.allow_outside_root) {
       const fs::path relative = fs::path(normalize(fs::absolute(key))).lexically_relative(root_dir_abs_);
       if (relative.empty() || *relative.begin() == "..")
-        return {std::nullopt,
-                fmt::format("is outside the checked directory tree '{}'; skipped (--allow-outside-root reads it)",
-                            root_dir_.empty() ? std::string(".") : root_dir_.generic_string())};
+        return {std::nullopt, "is outside the checked tree; skipped", Severity::Info,
+                fmt::format("the checked tree is '{}' (the git work tree, else the directory of asset-lint.toml, else "
+                            "the directory named); --root DIR or --allow-outside-root reads layers beyond it",
+                            shown_root())};
     }
     std::string ext = fs::path(key).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     const char* binary = "is a binary USD file, which a text linter cannot read; its opinions are skipped";
-    if (ext == ".usdc" || ext == ".usdz") return {std::nullopt, binary};
+    if (ext == ".usdc" || ext == ".usdz") return {std::nullopt, binary, Severity::Info, {}};
     std::string error;
     std::optional<std::string> text = files_.read(key, error);
-    if (!text) return {std::nullopt, fmt::format("cannot be read ({}); skipped", error)};
-    if (!starts_with_text_header(*text)) return {std::nullopt, binary};
+    if (!text) return {std::nullopt, fmt::format("cannot be read ({}); skipped", error), Severity::Info, {}};
+    if (!starts_with_text_header(*text)) return {std::nullopt, binary, Severity::Info, {}};
     const auto id = static_cast<FileId>(stage_.sources.size());
     stage_.sources.push_back(std::make_shared<const SourceFile>(key, std::move(*text)));
     stage_.layers.emplace_back();
     parse(id);
-    return {id, {}};
+    return {id, {}, Severity::Info, {}};
   }
 
   // A layer and its sublayers, strongest first; a layer reached twice keeps its first
@@ -193,11 +210,11 @@ class Composer {
       if (const Metadata* m = stage_.layers[id]->find_metadata("subLayers")) {
         for (const CompositionArc& arc : composition_arcs(m->value)) {
           if (arc.asset.empty()) continue;
-          auto sub = resolve(id, arc.asset, arc.span);
+          auto sub = resolve(id, arc.asset, arc.span, "");
           if (!sub) continue;
           if (std::find(chain.begin(), chain.end(), *sub) != chain.end()) {
             report(arc.span, Severity::Warning,
-                   fmt::format("sublayer cycle: '{}' already includes this layer; the arc is ignored", arc.asset));
+                   fmt::format("sublayer cycle: '{}' already includes this layer; the arc is ignored", arc.asset), "");
             continue;
           }
           if (std::find(out.begin(), out.end(), *sub) != out.end()) continue;  // diamond
@@ -242,7 +259,7 @@ class Composer {
       if (a.arc.asset.empty()) {
         target = owner.stack;
       } else {
-        target = resolve(owner.file, a.arc.asset, a.arc.span);
+        target = resolve(owner.file, a.arc.asset, a.arc.span, path);
       }
       if (!target || !stage_.layers[*target]) continue;
       std::string target_path(a.arc.prim_path);
@@ -250,7 +267,8 @@ class Composer {
         auto default_prim = stage_.layers[*target]->default_prim();
         if (!default_prim) {
           report(a.arc.span, Severity::Info,
-                 fmt::format("layer '{}' has no defaultPrim and the reference names no prim; skipped", a.arc.asset));
+                 fmt::format("layer '{}' has no defaultPrim and the reference names no prim; skipped", a.arc.asset),
+                 path);
           continue;
         }
         target_path = "/" + std::string(*default_prim);
@@ -263,18 +281,21 @@ class Composer {
       if (targets.empty()) {
         report(a.arc.span, Severity::Info,
                fmt::format("referenced prim '{}' is not in {}; skipped", target_path,
-                           a.arc.asset.empty() ? std::string("this layer stack") : fmt::format("'{}'", a.arc.asset)));
+                           a.arc.asset.empty() ? std::string("this layer stack") : fmt::format("'{}'", a.arc.asset)),
+               path);
         continue;
       }
       const bool cycle = std::any_of(targets.begin(), targets.end(), [&](const SpecRef& t) {
         return std::find(active.begin(), active.end(), t.prim) != active.end();
       });
       if (cycle) {
-        report(a.arc.span, Severity::Warning,
-               fmt::format("reference cycle: the arc on '{}' leads back to prim '{}'{}, which '{}' is already "
-                           "composed from; the arc is ignored",
-                           path, target_path, a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset),
-                           path));
+        Diagnostic* d = report(a.arc.span, Severity::Warning,
+                               fmt::format("reference cycle: the arc on '{}' leads back to '{}'; ignored", path, target_path),
+                               path);
+        if (d)
+          d->note(fmt::format("'{}' is already composed from prim '{}'{}: USD refuses such an arc, so whatever it "
+                              "was meant to bring in is missing in the simulator too.",
+                              path, target_path, a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset)));
         continue;
       }
       const std::size_t before = active.size();

@@ -89,6 +89,14 @@ struct Stage {
   std::vector<ComposedPrim> prims;                         // depth-first, parents before children
   std::vector<std::size_t> roots;                          // root prims, in order
   std::vector<Diagnostic> diagnostics;                     // parse-error, layer-unresolved
+  // Arcs whose opinions did not reach the stage (missing, binary, outside the checked
+  // tree, cyclic): their layer-unresolved diagnostic, and the prim whose opinions the arc
+  // would have brought ("" for a subLayer: the whole stage).
+  struct SkippedArc {
+    std::size_t diagnostic;
+    std::string scope;
+  };
+  std::vector<SkippedArc> skipped;
   bool usable = true;                                      // false: a layer has a syntax error
 
   const ComposedPrim* find(std::string_view path) const;

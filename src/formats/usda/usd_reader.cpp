@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_set>
 
+#include "formats/usda/skipped_layers.h"
 #include "rules/reader_rules.h"
 
 namespace assetlint::usda {
@@ -29,6 +31,8 @@ std::string schema_of(std::string_view name) {
     return "PhysicsDriveAPI:" + std::string(inst);
   if (auto inst = instance_after("physxMimicJoint:"); !inst.empty()) return "PhysxMimicJointAPI:" + std::string(inst);
   if (auto inst = instance_after("physxJointAxis:"); !inst.empty()) return "PhysxJointAxisAPI:" + std::string(inst);
+  if (auto inst = instance_after("physxDrivePerformanceEnvelope:"); !inst.empty())
+    return "PhysxDrivePerformanceEnvelopeAPI:" + std::string(inst);
   if (name.starts_with("physxJoint:")) return "PhysxJointAPI";
   if (name.starts_with("physxArticulation:")) return "PhysxArticulationAPI";
   if (name.starts_with("physxScene:")) return "PhysxSceneAPI";
@@ -83,10 +87,22 @@ class Reader {
       if (prim.has_api_schema("PhysicsRigidBodyAPI")) read_link(prim);
       if (auto type = joint_type(prim.type_name)) read_joint(prim, *type);
       if (prim.type_name == "PhysicsScene") read_scene(prim);
-      if (prim.has_api_schema("PhysxArticulationAPI") && !result_.asset.scene.position_iterations)
-        result_.asset.scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
+      if (prim.has_api_schema("PhysxArticulationAPI")) {
+        Scene& scene = result_.asset.scene;
+        if (!scene.position_iterations)
+          scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
+        if (!scene.velocity_iterations)
+          scene.velocity_iterations = number(prim, "physxArticulation:solverVelocityIterationCount", Unit::None);
+      }
     }
     result_.asset.index_names();
+    for (Joint& joint : result_.asset.joints) {
+      if (!joint.mimic) continue;
+      const Joint* reference = result_.asset.find_joint(joint.mimic->reference.text);
+      convert_mixed_gearing(joint, reference);
+      check_mimic_limits(joint, reference);
+    }
+    weigh_skipped_arcs(stage_, result_);
     return std::move(result_);
   }
 
@@ -115,8 +131,10 @@ class Reader {
     }
   }
 
-  void report(const RuleInfo& rule, const Span& span, std::string message) {
-    result_.diagnostics.push_back({std::string(rule.id), rule.default_severity, span, std::move(message), std::nullopt, {}});
+  void report(const RuleInfo& rule, const Span& span, std::string message, std::vector<std::string> notes = {}) {
+    Diagnostic d{std::string(rule.id), rule.default_severity, span, std::move(message), std::nullopt, {}};
+    for (std::string& note : notes) d.note(std::move(note));
+    result_.diagnostics.push_back(std::move(d));
   }
 
   // The declaration widened to whole lines when it stands alone on them, so that
@@ -156,13 +174,28 @@ class Reader {
     return v;
   }
 
-  // Attributes authored for schemas the prim does not apply: one note per schema.
+  // A value left at zero: what a tool writes when it switches a drive off (Robotiq's mimic
+  // joints keep stiffness/damping/maxForce = 0 under `delete apiSchemas`).
+  static bool zeroed(const AttributeOpinion& a) {
+    if (!a.attribute->default_value) return false;
+    auto values = a.attribute->default_value->as_numbers();
+    if (!values) {
+      auto single = a.attribute->default_value->as_double();
+      if (!single) return false;
+      values = std::vector<double>{*single};
+    }
+    return std::all_of(values->begin(), values->end(), [](double v) { return v == 0.0; });
+  }
+
+  // Attributes authored for schemas the prim does not apply: one finding per schema. Zeroed
+  // leftovers of a deleted schema are harmless and not reported.
   void check_stale(const ComposedPrim& prim) {
     std::map<std::string, std::vector<AttributeOpinion>> by_schema;
     std::vector<std::string> order;
     for (const AttributeOpinion& a : prim.attributes()) {
       std::string schema = schema_of(a.attribute->name);
       if (schema.empty() || prim.has_api_schema(schema)) continue;
+      if (prim.schema_deleted(schema) && zeroed(a)) continue;
       auto& list = by_schema[schema];
       if (list.empty()) order.push_back(schema);
       list.push_back(a);
@@ -173,11 +206,21 @@ class Reader {
       for (const AttributeOpinion& a : attrs) names += (names.empty() ? "'" : ", '") + a.attribute->name + "'";
       const bool deleted = prim.schema_deleted(schema);
       report(rules::kStaleSchemaAttribute, attrs.front().attribute->name_span,
-             fmt::format("{} {} authored on '{}' but {} {}: PhysX ignores {}", names,
-                         attrs.size() == 1 ? "is" : "are", prim.path, schema,
-                         deleted ? "is removed by `delete apiSchemas`" : "is not applied",
-                         attrs.size() == 1 ? "it" : "them"));
+             fmt::format("{} on '{}' is {}: PhysX ignores {}", schema, leaf_name(prim.path),
+                         deleted ? "deleted" : "not applied",
+                         attrs.size() == 1 ? "its attribute" : fmt::format("its {} attributes", attrs.size())));
+      Diagnostic& d = result_.diagnostics.back();
+      d.note(fmt::format("{} {} authored on '{}', but {} {}.", names, attrs.size() == 1 ? "is" : "are", prim.path,
+                         schema, deleted ? "is removed by `delete apiSchemas`" : "is not applied"));
+      d.note(deleted ? "They record what someone meant before switching the schema off; delete them, or apply the "
+                       "schema again if they should act."
+                     : "Apply the schema if they should act, or delete them.");
     }
+  }
+
+  static std::string_view leaf_name(std::string_view path) {
+    const auto slash = path.rfind('/');
+    return slash == std::string_view::npos ? path : path.substr(slash + 1);
   }
 
   void read_link(const ComposedPrim& prim) {
@@ -213,9 +256,12 @@ class Reader {
         in.com_span = com_span;
       } else {
         in.com_span = in.span;  // (-inf, -inf, -inf) or unauthored: PhysX computes it; the origin stands in
+        in.com_authored = false;
       }
       link.inertial = in;
     }
+    if (auto opinion = prim.attribute("physics:kinematicEnabled"); opinion && opinion->attribute->default_value)
+      link.kinematic = opinion->attribute->default_value->as_bool().value_or(false);
     result_.asset.links.push_back(std::move(link));
   }
 
@@ -283,15 +329,19 @@ class Reader {
       joint.upper = limit("physics:upperLimit");
     }
 
-    // Degrees of freedom the drive and per-axis schemas may name, in preference order.
+    // The drive instances PhysX reads for this joint type (PHYSICS.md §2 item 9): a revolute
+    // joint only :angular, a prismatic one only :linear; rotX…transZ are D6 axes.
     std::vector<std::string> instances;
     const char axes[] = {'X', 'Y', 'Z'};
-    if (type == JointType::Revolute) instances = {"angular", std::string("rot") + axis};
-    else if (prismatic) instances = {"linear", std::string("trans") + axis};
+    if (type == JointType::Revolute) instances = {"angular"};
+    else if (prismatic) instances = {"linear"};
     else if (type == JointType::Generic || type == JointType::Spherical)
       for (const char* kind : {"rot", "trans"})
         for (char a : axes) instances.push_back(kind + std::string(1, a));
     auto angular_instance = [&](const std::string& inst) { return inst == "angular" || inst.starts_with("rot"); };
+    auto read_by_joint = [&](const std::string& inst) {
+      return std::find(instances.begin(), instances.end(), inst) != instances.end();
+    };
 
     const double torque_scale = kpu_ * mpu_ * mpu_;  // stage mass·length² → kg·m²
     auto read_drive = [&](const std::string& inst) {
@@ -313,12 +363,41 @@ class Reader {
           drive.type_span = opinion->attribute->default_value->span;
         }
       }
+      if (prim.has_api_schema("PhysxDrivePerformanceEnvelopeAPI:" + inst)) {
+        const std::string env = "physxDrivePerformanceEnvelope:" + inst + ":";
+        PerformanceEnvelope envelope;
+        envelope.span = prim.schema_span("PhysxDrivePerformanceEnvelopeAPI:" + inst);
+        envelope.max_actuator_velocity = angular ? number(prim, env + "maxActuatorVelocity", Unit::DegreePerSecond)
+                                                 : number(prim, env + "maxActuatorVelocity", Unit::MeterPerSecond, mpu_);
+        envelope.velocity_dependent_resistance =
+            angular ? number(prim, env + "velocityDependentResistance", Unit::NewtonMeterSecondPerDegree, torque_scale)
+                    : number(prim, env + "velocityDependentResistance", Unit::NewtonSecondPerMeter, kpu_);
+        envelope.speed_effort_gradient = number(prim, env + "speedEffortGradient", Unit::None);
+        drive.envelope = std::move(envelope);
+      }
       return drive;
     };
     for (const std::string& inst : instances) {
       if (!prim.has_api_schema("PhysicsDriveAPI:" + inst)) continue;
       joint.drive = read_drive(inst);
       break;
+    }
+    // A drive instance this joint type does not read moves nothing; it is not linted.
+    if (single) {
+      constexpr std::string_view kDrive = "PhysicsDriveAPI:";
+      for (const std::string& schema : prim.api_schemas) {
+        if (!std::string_view(schema).starts_with(kDrive) || read_by_joint(schema.substr(kDrive.size()))) continue;
+        const char* wanted = prismatic ? "PhysicsDriveAPI:linear" : "PhysicsDriveAPI:angular";
+        report(rules::kDriveInstanceIgnored, prim.schema_span(schema),
+               fmt::format("{} on {} joint '{}' drives nothing (PhysX reads only :{})", schema,
+                           prismatic ? "prismatic" : "revolute", prim.path, prismatic ? "linear" : "angular"),
+               {fmt::format("The joint is {}: omni.physx builds a revolute joint's drive from the :angular instance and "
+                            "a prismatic joint's from :linear only; rotX…transZ instances are for D6 joints (PhysicsJoint).",
+                            joint.drive ? "driven by " + std::string(wanted) + " alone" : "undriven"),
+                fmt::format("Rename the instance to {} (in apiSchemas and in its drive:… attribute names) if it is meant "
+                            "to drive the joint.",
+                            wanted)});
+      }
     }
     // Gains left behind by a removed drive schema: inactive, but evidence of what was
     // copied where (mimic-copied-drive-gains).
@@ -339,16 +418,19 @@ class Reader {
                                      : number(prim, "physxJoint:armature", Unit::Kilogram, kpu_);
       joint.joint_friction = number(prim, "physxJoint:jointFriction", Unit::None);
     }
-    for (const std::string& inst : instances) {
+    // PhysxJointAxisAPI:<axis>, when applied, replaces PhysxJointAPI's armature and max
+    // velocity as a whole: what it leaves unauthored takes its own fallback (1e6, 0).
+    std::vector<std::string> axis_instances = instances;
+    if (type == JointType::Revolute) axis_instances.push_back(std::string("rot") + axis);
+    if (prismatic) axis_instances.push_back(std::string("trans") + axis);
+    for (const std::string& inst : axis_instances) {
       if (!prim.has_api_schema("PhysxJointAxisAPI:" + inst)) continue;
       const std::string ns = "physxJointAxis:" + inst + ":";
       const bool angular = angular_instance(inst);
-      if (auto v = angular ? number(prim, ns + "maxJointVelocity", Unit::DegreePerSecond)
-                           : number(prim, ns + "maxJointVelocity", Unit::MeterPerSecond, mpu_))
-        joint.velocity = v;
-      if (auto a = angular ? number(prim, ns + "armature", Unit::KilogramMeter2, torque_scale)
-                           : number(prim, ns + "armature", Unit::Kilogram, kpu_))
-        joint.armature = a;
+      joint.velocity = angular ? number(prim, ns + "maxJointVelocity", Unit::DegreePerSecond)
+                               : number(prim, ns + "maxJointVelocity", Unit::MeterPerSecond, mpu_);
+      joint.armature = angular ? number(prim, ns + "armature", Unit::KilogramMeter2, torque_scale)
+                               : number(prim, ns + "armature", Unit::Kilogram, kpu_);
       break;
     }
 
@@ -364,9 +446,8 @@ class Reader {
       const Span span = prim.schema_span(schema);
       if (!is_rot_instance(inst)) {
         report(rules::kMimicAxisInstance, span,
-               fmt::format("'{}' on '{}': the mimic joint instance must be rotX, rotY or rotZ; PhysX silently ignores "
-                           "'{}', so this joint is not coupled",
-                           schema, prim.path, inst));
+               fmt::format("'{}' on '{}': not a mimic instance, so the joint is not coupled", schema, prim.path),
+               {fmt::format("A mimic joint instance must be rotX, rotY or rotZ; PhysX silently ignores '{}'.", inst)});
         continue;
       }
       if (joint.mimic) continue;
@@ -387,10 +468,51 @@ class Reader {
     }
   }
 
+  // An angular mimic of a linear joint writes its gearing in deg per distance, a linear
+  // mimic of an angular joint in distance per deg: omni.physx converts degrees, and the
+  // model's metres need the stage's metersPerUnit on top.
+  void convert_mixed_gearing(Joint& joint, const Joint* reference) {
+    if (!reference || !is_single_dof(joint.type) || !is_single_dof(reference->type)) return;
+    if (is_angular(joint.type) == is_angular(reference->type)) return;
+    Quantity& gearing = joint.mimic->multiplier;
+    const bool angular_mimic = is_angular(joint.type);
+    const Unit unit = angular_mimic ? Unit::UsdGearingDegreePerDistance : Unit::UsdGearingDistancePerDegree;
+    const double scale = angular_mimic ? 1.0 / mpu_ : mpu_;
+    Quantity converted = Quantity::from_authored(gearing.authored, unit, gearing.span, scale);
+    converted.declaration = gearing.declaration;
+    if (!gearing.span.valid()) converted.span = Span{};
+    gearing = converted;
+  }
+
+  // omni.physx refuses a mimic on a revolute joint, or with a revolute reference, that
+  // has no finite limits (USD only: Isaac's URDF importer gives URDF mimics limits).
+  void check_mimic_limits(const Joint& joint, const Joint* reference) {
+    auto unlimited_revolute = [](const Joint& j) { return j.type == JointType::Revolute && (!j.lower || !j.upper); };
+    const bool own = unlimited_revolute(joint);
+    const bool ref = reference && unlimited_revolute(*reference);
+    if (!own && !ref) return;
+    const Joint& culprit = own ? joint : *reference;
+    std::vector<std::string> notes{
+        fmt::format("'{}' is a revolute joint whose physics:lowerLimit / physics:upperLimit are {}: omni.physx does not "
+                    "create a mimic joint on (or following) a revolute joint without finite limits, so the joints are "
+                    "not coupled.",
+                    culprit.name.text, !culprit.lower && !culprit.upper ? "both unauthored or infinite" : "not both finite"),
+        "Author finite limits in degrees on that joint (its mechanical range)."};
+    report(rules::kMimicLimitsRequired, joint.mimic->span,
+           own ? fmt::format("mimic on revolute joint '{}' without finite limits: omni.physx refuses it", joint.name.text)
+               : fmt::format("mimic '{}' follows revolute joint without finite limits: omni.physx refuses it",
+                             joint.name.text),
+           std::move(notes));
+  }
+
   void read_scene(const ComposedPrim& prim) {
     Scene& scene = result_.asset.scene;
     if (!prim.has_api_schema("PhysxSceneAPI")) return;
     if (!scene.timesteps_per_second) scene.timesteps_per_second = number(prim, "physxScene:timeStepsPerSecond", Unit::PerSecond);
+    if (!scene.min_position_iterations)
+      scene.min_position_iterations = number(prim, "physxScene:minPositionIterationCount", Unit::None);
+    if (!scene.max_position_iterations)
+      scene.max_position_iterations = number(prim, "physxScene:maxPositionIterationCount", Unit::None);
     if (scene.solver.empty()) {
       if (auto opinion = prim.attribute("physxScene:solverType")) {
         if (auto token = opinion->attribute->default_value->as_string()) {

@@ -1,0 +1,56 @@
+#include "rules/limit_placeholders.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "rules/support.h"
+
+namespace assetlint::rules {
+
+bool is_power_of_ten(double value, int min_exponent) {
+  if (!(value > 0) || !std::isfinite(value)) return false;
+  const double exponent = std::round(std::log10(value));
+  return exponent >= min_exponent && std::fabs(value - std::pow(10.0, exponent)) <= 1e-9 * value;
+}
+
+std::vector<const Joint*> joints_sharing(const Asset& asset, const Joint& joint, OptQuantity Joint::*field) {
+  std::vector<const Joint*> same;
+  const OptQuantity& mine = joint.*field;
+  if (!mine) return same;
+  for (const Joint& other : asset.joints) {
+    const OptQuantity& theirs = other.*field;
+    if (&other == &joint || !is_single_dof(other.type) || !theirs) continue;
+    if (theirs->value == mine->value) same.push_back(&other);
+  }
+  return same;
+}
+
+std::size_t movable_joint_count(const Asset& asset) {
+  std::size_t count = 0;
+  for (const Joint& joint : asset.joints) count += is_single_dof(joint.type) ? 1 : 0;
+  return count;
+}
+
+bool has_active_drive(const Joint& joint) {
+  return joint.drive && ((joint.drive->stiffness && joint.drive->stiffness->value > 0) ||
+                         (joint.drive->damping && joint.drive->damping->value > 0));
+}
+
+std::string LimitCheck::label() const { return (driven ? "driven " : "") + joint_label(joint); }
+
+Diagnostic& report_sentinel(const LimitCheck& c, const Quantity& q, std::string_view what, bool judged,
+                            std::string_view consumers, std::string_view bound_kind) {
+  const bool convention = q.value == 0 || q.value == -1;
+  Diagnostic& d = c.out.report(
+      q.span, judged || !convention ? Severity::Warning : Severity::Info,
+      convention ? fmt::format("{} {} of {} is a sentinel: unbounded in Isaac Sim{}", what, describe(q), c.label(),
+                               q.value == 0 ? ", zero elsewhere" : " and Gazebo, negative elsewhere")
+                 : fmt::format("{} {} of {} is negative", what, describe(q), c.label()));
+  d.note(std::string(consumers));
+  if (!convention)
+    d.note(fmt::format("No consumer reads a negative bound other than −1 as a {}: a sign slip?", bound_kind));
+  return d;
+}
+
+}  // namespace assetlint::rules

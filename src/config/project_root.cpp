@@ -1,0 +1,56 @@
+#include "config/project_root.h"
+
+#include <filesystem>
+
+#include "config/config.h"
+
+namespace assetlint::config {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool inside(const fs::path& file, const fs::path& root) {
+  const fs::path relative = file.lexically_relative(root);
+  return !relative.empty() && *relative.begin() != "..";
+}
+
+fs::path git_work_tree(const fs::path& file) {
+  std::error_code ec;
+  for (fs::path dir = file.parent_path(); !dir.empty(); dir = dir.parent_path()) {
+    if (fs::exists(dir / ".git", ec)) return dir;
+    if (dir == dir.root_path()) break;
+  }
+  return {};
+}
+
+// The deepest named tree that holds the file. Lexical paths, like the composer's own
+// check: a tree named through a symlink keeps the files found through that symlink inside it.
+fs::path deepest_named_tree(const fs::path& file, const std::vector<std::string>& trees) {
+  std::error_code ec;
+  fs::path best;
+  for (const auto& tree : trees) {
+    const fs::path root = fs::absolute(tree, ec).lexically_normal();
+    if (inside(file, root) && root.native().size() > best.native().size()) best = root;
+  }
+  return best;
+}
+
+std::string without_trailing_separator(fs::path path) {
+  std::string text = path.lexically_normal().string();
+  while (text.size() > 1 && text.back() == '/') text.pop_back();
+  return text;
+}
+
+}  // namespace
+
+std::string checked_root(const std::string& path, const Settings& settings) {
+  std::error_code ec;
+  if (!settings.root.empty()) return without_trailing_separator(fs::absolute(settings.root, ec));
+  const fs::path file = fs::absolute(path, ec).lexically_normal();
+  if (fs::path git = git_work_tree(file); !git.empty()) return without_trailing_separator(git);
+  if (fs::path config = discover(file); !config.empty())
+    return without_trailing_separator(fs::absolute(config, ec).parent_path());
+  return deepest_named_tree(file, settings.trees).string();
+}
+
+}  // namespace assetlint::config

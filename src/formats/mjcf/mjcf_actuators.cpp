@@ -1,0 +1,184 @@
+#include "formats/mjcf/mjcf_actuators.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/numbers.h"
+
+namespace assetlint::mjcf {
+namespace {
+
+using tinyxml2::XMLElement;
+
+// One actuator parameter and the literal it comes from: value = sign × authored.
+struct Param {
+  static Param fixed(double v) {
+    Param p;
+    p.value = v;
+    return p;
+  }
+  double value = 0.0;
+  Attr attr;                  // empty: MuJoCo's default
+  const char* name = nullptr;
+  std::size_t token = 0;
+  double sign = 1.0;
+};
+
+struct Params {
+  Param gain = Param::fixed(1.0);
+  Param bias_position;  // biasprm[1] = −kp
+  Param bias_velocity;  // biasprm[2] = −kv
+  bool affine = false;
+  std::string gaintype = "fixed";
+  Param gear = Param::fixed(1.0);
+  Attr forcerange, ctrlrange, dampratio;
+  std::optional<bool> forcelimited, ctrllimited;
+};
+
+Param token_param(const Attr& attr, const char* name, std::size_t token, double sign) {
+  Param p;
+  p.attr = attr;
+  p.name = name;
+  p.token = token;
+  p.sign = sign;
+  auto numbers = parse_doubles(attr.value ? attr.value : "");
+  if (!numbers || numbers->size() <= token) return Param{};  // MuJoCo fills missing entries with 0
+  p.value = sign * (*numbers)[token];
+  return p;
+}
+
+Attr own(const XMLElement* el, const char* name) { return Attr{el, el->Attribute(name)}; }
+
+void apply(const XMLElement* el, Params& p, Values& values) {
+  const std::string_view tag = el->Name();
+  if (Attr a = own(el, "gear"); a && values.numbers(a, "gear")) p.gear = token_param(a, "gear", 0, 1.0);
+  if (Attr a = own(el, "forcerange")) p.forcerange = a;
+  if (Attr a = own(el, "ctrlrange")) p.ctrlrange = a;
+  if (auto f = values.flag(own(el, "forcelimited"), "forcelimited")) p.forcelimited = f;
+  if (auto f = values.flag(own(el, "ctrllimited"), "ctrllimited")) p.ctrllimited = f;
+  if (tag == "general") {
+    if (Attr a = own(el, "biastype")) p.affine = trim(a.value) == "affine";
+    if (Attr a = own(el, "gaintype")) p.gaintype = std::string(trim(a.value));
+    if (Attr a = own(el, "gainprm"); a && values.numbers(a, "gainprm")) p.gain = token_param(a, "gainprm", 0, 1.0);
+    if (Attr a = own(el, "biasprm"); a && values.numbers(a, "biasprm")) {
+      p.bias_position = token_param(a, "biasprm", 1, -1.0);
+      p.bias_velocity = token_param(a, "biasprm", 2, -1.0);
+    }
+  } else if (tag == "position") {
+    if (Attr a = own(el, "kp"); a && values.numbers(a, "kp", 1)) p.gain = token_param(a, "kp", 0, 1.0);
+    p.bias_position = p.gain;  // biasprm[1] = −kp, read as the stiffness kp
+    if (Attr a = own(el, "kv"); a && values.numbers(a, "kv", 1)) p.bias_velocity = token_param(a, "kv", 0, 1.0);
+    if (Attr a = own(el, "dampratio")) p.dampratio = a;
+    p.affine = true;
+    p.gaintype = "fixed";
+  } else if (tag == "motor") {
+    p.gain = Param::fixed(1.0);
+    p.bias_position = p.bias_velocity = Param{};
+    p.affine = false;
+    p.gaintype = "fixed";
+  }
+}
+
+OptQuantity quantity(const Param& p, Unit unit, double scale, Values& values) {
+  if (!p.attr) return Quantity::unauthored(p.value * scale, unit);
+  return values.quantity(p.attr, p.name, unit, p.token, p.sign * scale);
+}
+
+// The larger bound of a range attribute, as a quantity scaled to the joint.
+OptQuantity range_bound(const Attr& a, const char* name, Unit unit, double scale, Values& values) {
+  auto v = values.numbers(a, name, 2);
+  if (!v) return std::nullopt;
+  const std::size_t i = std::abs((*v)[1]) >= std::abs((*v)[0]) ? 1 : 0;
+  const double sign = (*v)[i] < 0 ? -1.0 : 1.0;
+  return values.quantity(a, name, unit, i, sign * scale);
+}
+
+}  // namespace
+
+void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler, Values& values,
+                   Asset& asset) {
+  const std::string_view tag = el->Name();
+  const char* cls = el->Attribute("class");
+  if (cls && !defaults.has_class(cls)) {
+    values.error(values.value_span(own(el, "class"), "class"), fmt::format("unknown default class '{}'", cls));
+    return;
+  }
+  Params p;
+  for (const XMLElement* d : defaults.elements(cls ? cls : "main", "actuator")) apply(d, p, values);
+  apply(el, p, values);
+
+  const char* name = el->Attribute("name");
+  const std::string label = name ? fmt::format("actuator '{}'", name) : fmt::format("<{}> actuator", tag);
+  const char* joint_name = el->Attribute("joint");
+  if (!joint_name) joint_name = el->Attribute("jointinparent");
+  if (!joint_name) {
+    for (const char* other : {"tendon", "site", "body", "cranksite"})
+      if (const char* target = el->Attribute(other)) {
+        values.unsupported(values.element_span(el), fmt::format("{} acts through {} '{}'", label, other, target))
+            .note("Only joint transmissions are modelled: the joints it moves count as undriven.");
+        return;
+      }
+    values.error(values.element_span(el), fmt::format("{} names no joint, tendon, site or body", label));
+    return;
+  }
+  auto joint = std::find_if(asset.joints.begin(), asset.joints.end(),
+                            [&](const Joint& j) { return j.name.text == joint_name; });
+  if (joint == asset.joints.end()) {
+    values.error(values.value_span(own(el, "joint"), "joint"), fmt::format("{} names unknown joint '{}'", label, joint_name));
+    return;
+  }
+  if (tag != "position" && tag != "general" && tag != "motor") {
+    values.unsupported(values.element_span(el), fmt::format("<{}> actuators are not modelled ({})", tag, label))
+        .note(fmt::format("The joint '{}' counts as undriven by it.", joint_name));
+    return;
+  }
+  if (!is_single_dof(joint->type)) return;
+  const bool angular = is_angular(joint->type);
+  const double g = p.gear.value;
+  const bool force_limited = p.forcelimited.value_or(p.forcerange && compiler.autolimits);
+  const bool ctrl_limited = p.ctrllimited.value_or(p.ctrlrange && compiler.autolimits);
+  const Unit force_unit = angular ? Unit::NewtonMeter : Unit::Newton;
+
+  if (p.gaintype != "fixed") {
+    values.unsupported(values.element_span(el), fmt::format("{}: gaintype '{}' is not modelled", label, p.gaintype));
+    return;
+  }
+  if (p.affine && (p.bias_position.value > 0 || p.bias_velocity.value > 0)) {
+    if (joint->drive) return;  // a second servo on the joint: the first one is the drive the rules judge
+    Drive drive;
+    drive.span = values.element_span(el);
+    drive.type_span = drive.span;
+    drive.stiffness = quantity(p.bias_position, angular ? Unit::NewtonMeterPerRadian : Unit::NewtonPerMeter, g * g, values);
+    if (p.bias_velocity.attr || p.bias_velocity.value != 0)
+      drive.damping = quantity(p.bias_velocity, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter,
+                               g * g, values);
+    // MuJoCo damps the joint with the actuator's kv and the joint's own damping alike.
+    if (joint->joint_damping && joint->joint_damping->value > 0) {
+      if (!drive.damping || drive.damping->value == 0) {
+        drive.damping = joint->joint_damping;
+      } else {
+        // Two literals make up the damping: no single one to rewrite.
+        drive.damping = Quantity::unauthored(drive.damping->value + joint->joint_damping->value, drive.damping->unit);
+      }
+    }
+    if (p.dampratio) {
+      drive.damping.reset();
+      values.unsupported(values.value_span(p.dampratio, "dampratio"), fmt::format("{}: damping given as dampratio", label))
+          .note("MuJoCo derives kv from the mass matrix at the reference pose; the drive's damping is left unknown.");
+    }
+    if (force_limited && p.forcerange) drive.max_force = range_bound(p.forcerange, "forcerange", force_unit, std::abs(g), values);
+    joint->drive = std::move(drive);
+    return;
+  }
+  if (p.affine) return;  // an affine bias without a spring or damper term: not a drive
+  // A motor (force = gain·ctrl): the control range bounds the effort, the force range clamps it.
+  OptQuantity effort;
+  if (force_limited && p.forcerange) effort = range_bound(p.forcerange, "forcerange", force_unit, std::abs(g), values);
+  else if (ctrl_limited && p.ctrlrange)
+    effort = range_bound(p.ctrlrange, "ctrlrange", force_unit, std::abs(g * p.gain.value), values);
+  if (effort && !joint->effort) joint->effort = effort;
+}
+
+}  // namespace assetlint::mjcf

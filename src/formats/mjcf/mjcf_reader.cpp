@@ -1,0 +1,347 @@
+#include "formats/mjcf/mjcf_reader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "formats/mjcf/mjcf_actuators.h"
+#include "formats/mjcf/mjcf_defaults.h"
+#include "formats/mjcf/mjcf_values.h"
+#include "formats/xml/xml_scanner.h"
+#include "util/numbers.h"
+
+namespace assetlint::mjcf {
+namespace {
+
+using tinyxml2::XMLElement;
+
+// MuJoCo's <option timestep> default, seconds.
+constexpr double kDefaultTimestep = 0.002;
+
+Attr own(const XMLElement* el, const char* name) { return Attr{el, el->Attribute(name)}; }
+
+class Reader {
+ public:
+  Reader(std::shared_ptr<const SourceFile> file, const FileSystem& files, const ReadOptions& options)
+      : sources_(std::move(file), files, options), values_(sources_, result_.diagnostics) {}
+
+  ReadResult run() {
+    result_.asset.format = SourceFormat::Mjcf;
+    result_.asset.sources = sources_.sources;
+    for (auto& d : sources_.diagnostics) result_.diagnostics.push_back(std::move(d));
+    const XMLElement* root = sources_.root();
+    if (!root || !sources_.usable) {
+      result_.usable = false;
+      return std::move(result_);
+    }
+    const char* model = root->Attribute("model");
+    result_.asset.robot_name = Name{model ? model : "MuJoCo Model",
+                                    model ? sources_.document_of(root).value_span(root, "model") : values_.element_span(root)};
+    result_.asset.robot_span = values_.element_span(root);
+
+    // MuJoCo reads <compiler> and <default> before the rest, wherever they are written.
+    const auto sections = sources_.children(root);
+    if (std::none_of(sections.begin(), sections.end(),
+                     [](const XMLElement* el) { return std::string_view(el->Name()) == "worldbody"; })) {
+      values_.unsupported(result_.asset.robot_span, "no <worldbody>: an <include> fragment, not a model")
+          .note("It is checked as part of the model that includes it.");
+      result_.usable = false;
+      return std::move(result_);
+    }
+    for (const XMLElement* el : sections)
+      if (std::string_view(el->Name()) == "compiler") read_compiler(el);
+    for (const XMLElement* el : sections)
+      if (std::string_view(el->Name()) == "default") defaults_.read(sources_, el, result_.diagnostics);
+    read_timestep(sections);
+    for (const XMLElement* el : sections)
+      if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
+    for (const XMLElement* el : sections) {
+      const std::string_view tag = el->Name();
+      if (tag == "equality") {
+        for (const XMLElement* c : sources_.children(el))
+          if (std::string_view(c->Name()) == "joint") read_equality_joint(c);
+      } else if (tag == "actuator") {
+        for (const XMLElement* c : sources_.children(el)) read_actuator(c, defaults_, compiler_, values_, result_.asset);
+      }
+    }
+    result_.asset.index_names();  // after the equalities: they make the mimics
+    return std::move(result_);
+  }
+
+ private:
+  void read_compiler(const XMLElement* el) {
+    if (const char* angle = el->Attribute("angle")) {
+      const std::string_view a = trim(angle);
+      if (a != "degree" && a != "radian")
+        values_.error(values_.value_span(own(el, "angle"), "angle"),
+                      fmt::format("<compiler angle>: expected degree or radian, found '{}'", angle));
+      compiler_.degree = a != "radian";
+      compiler_.angle_span = values_.value_span(own(el, "angle"), "angle");
+    }
+    if (const char* seq = el->Attribute("eulerseq")) {
+      const std::string s(trim(seq));
+      const bool valid = s.size() == 3 && s.find_first_not_of("xyzXYZ") == std::string::npos;
+      if (!valid) values_.error(values_.value_span(own(el, "eulerseq"), "eulerseq"),
+                                fmt::format("<compiler eulerseq>: expected three of x, y, z, X, Y, Z, found '{}'", seq));
+      else compiler_.eulerseq = s;
+    }
+    if (auto f = values_.flag(own(el, "autolimits"), "autolimits")) compiler_.autolimits = *f;
+    if (const char* g = el->Attribute("inertiafromgeom")) compiler_.inertiafromgeom = std::string(trim(g));
+  }
+
+  void read_timestep(const std::vector<const XMLElement*>& sections) {
+    Scene& scene = result_.asset.scene;
+    scene.solver = "MuJoCo";
+    for (const XMLElement* el : sections) {
+      if (std::string_view(el->Name()) != "option") continue;
+      scene.solver_span = values_.element_span(el);
+      if (auto q = values_.quantity(own(el, "timestep"), "timestep", Unit::SecondsPerStep)) {
+        if (!(q->authored > 0) || !std::isfinite(q->authored)) {
+          values_.error(q->span, fmt::format("<option timestep>: must be a positive number of seconds, found '{}'",
+                                             format_number(q->authored)));
+          continue;
+        }
+        scene.timesteps_per_second = q;
+      }
+    }
+    if (!scene.timesteps_per_second)
+      scene.timesteps_per_second = Quantity::unauthored(to_model_units(kDefaultTimestep, Unit::SecondsPerStep), Unit::SecondsPerStep);
+  }
+
+  // The class an element inside a body takes its defaults from.
+  std::optional<std::string> class_of(const XMLElement* el, const std::string& childclass) {
+    const char* cls = el->Attribute("class");
+    if (!cls) return childclass;
+    if (!defaults_.has_class(cls)) {
+      values_.error(values_.value_span(own(el, "class"), "class"), fmt::format("unknown default class '{}'", cls));
+      return std::nullopt;
+    }
+    return std::string(cls);
+  }
+
+  std::string body_name(const XMLElement* el) {
+    if (const char* name = el->Attribute("name")) return name;
+    return fmt::format("(unnamed body at line {})", values_.element_span(el).line);
+  }
+
+  void read_bodies(const XMLElement* parent_el, const std::string& parent, const std::string& childclass) {
+    for (const XMLElement* el : sources_.children(parent_el)) {
+      if (std::string_view(el->Name()) != "body") continue;
+      std::string cls = childclass;
+      if (const char* c = el->Attribute("childclass")) {
+        if (!defaults_.has_class(c))
+          values_.error(values_.value_span(own(el, "childclass"), "childclass"), fmt::format("unknown default class '{}'", c));
+        else cls = c;
+      }
+      read_body(el, parent, cls);
+    }
+  }
+
+  void read_body(const XMLElement* el, const std::string& parent, const std::string& cls) {
+    Link link;
+    link.name = Name{body_name(el), el->Attribute("name") ? values_.value_span(own(el, "name"), "name") : values_.element_span(el)};
+    link.span = values_.element_span(el);
+    const Eigen::Isometry3d body_pose = pose(el, compiler_, values_);
+    std::size_t joints = 0;
+    for (const XMLElement* c : sources_.children(el)) {
+      const std::string_view tag = c->Name();
+      if (tag == "inertial") read_inertial(c, link);
+      else if (tag == "joint" || tag == "freejoint") joints += read_joint(c, link.name.text, parent, body_pose, cls);
+    }
+    if (joints == 0) {
+      Joint weld;
+      weld.name = Name{link.name.text + " (welded)", link.name.span};
+      weld.span = link.span;
+      weld.type = JointType::Fixed;
+      weld.type_span = link.span;
+      weld.parent = Name{parent, link.span};
+      weld.child = link.name;
+      weld.frame_in_link[0] = body_pose;
+      weld.axis_span = weld.limit_span = link.span;
+      result_.asset.joints.push_back(std::move(weld));
+    }
+    const std::string name = link.name.text;  // links grows below: no reference into it
+    result_.asset.links.push_back(std::move(link));
+    read_bodies(el, name, cls);
+  }
+
+  void read_inertial(const XMLElement* el, Link& link) {
+    if (compiler_.inertiafromgeom == "true") return;  // MuJoCo ignores <inertial> and derives both from geoms
+    Inertial in;
+    in.span = values_.element_span(el);
+    if (auto m = values_.quantity(own(el, "mass"), "mass", Unit::Kilogram)) in.mass = *m;
+    else {
+      in.mass = Quantity::unauthored(0.0, Unit::Kilogram);
+      in.mass.span = in.span;
+      in.mass_authored = false;
+    }
+    const Eigen::Isometry3d frame = pose(el, compiler_, values_);
+    in.com = frame.translation();
+    in.com_span = el->Attribute("pos") ? values_.value_span(own(el, "pos"), "pos") : in.span;
+    Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
+    if (auto d = values_.numbers(own(el, "diaginertia"), "diaginertia", 3)) {
+      tensor = Eigen::Vector3d((*d)[0], (*d)[1], (*d)[2]).asDiagonal();
+      in.inertia_span = values_.value_span(own(el, "diaginertia"), "diaginertia");
+    } else if (auto f = values_.numbers(own(el, "fullinertia"), "fullinertia", 6)) {
+      // ixx iyy izz ixy ixz iyz
+      const auto& v = *f;
+      tensor << v[0], v[3], v[4], v[3], v[1], v[5], v[4], v[5], v[2];
+      in.inertia_span = values_.value_span(own(el, "fullinertia"), "fullinertia");
+    } else {
+      in.inertia_span = in.span;
+      in.inertia_authored = false;
+    }
+    in.inertia = frame.linear() * tensor * frame.linear().transpose();
+    link.inertial = in;
+  }
+
+  static std::optional<JointType> joint_type(std::string_view type) {
+    if (type == "hinge") return JointType::Revolute;
+    if (type == "slide") return JointType::Prismatic;
+    if (type == "ball") return JointType::Spherical;
+    if (type == "free") return JointType::Floating;
+    return std::nullopt;
+  }
+
+  std::size_t read_joint(const XMLElement* el, const std::string& body, const std::string& parent,
+                         const Eigen::Isometry3d& body_pose, const std::string& childclass) {
+    const auto cls = class_of(el, childclass);
+    if (!cls) return 1;
+    const auto& defs = defaults_.elements(*cls, "joint");
+    auto lookup = [&](const char* name) { return Defaults::lookup(el, defs, name); };
+    Joint joint;
+    const char* name = el->Attribute("name");
+    joint.span = values_.element_span(el);
+    joint.name = Name{name ? name : fmt::format("(unnamed joint at line {})", joint.span.line),
+                      name ? values_.value_span(own(el, "name"), "name") : joint.span};
+    const bool free = std::string_view(el->Name()) == "freejoint";
+    const Attr type_attr = free ? Attr{} : lookup("type");
+    const std::string_view type_text = type_attr ? trim(type_attr.value) : (free ? "free" : "hinge");
+    auto type = joint_type(type_text);
+    joint.type_span = type_attr ? values_.value_span(type_attr, "type") : joint.span;
+    if (!type) {
+      values_.error(joint.type_span, fmt::format("<joint type>: expected hinge, slide, ball or free, found '{}'", type_text));
+      return 1;
+    }
+    joint.type = *type;
+    joint.parent = Name{parent, joint.span};
+    joint.child = Name{body, joint.span};
+
+    Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+    if (auto p = values_.numbers(lookup("pos"), "pos", 3)) at.translation() = Eigen::Vector3d((*p)[0], (*p)[1], (*p)[2]);
+    joint.frame_in_link[1] = at;
+    joint.frame_in_link[0] = body_pose * at;
+    joint.axis = Eigen::Vector3d::UnitZ();
+    joint.axis_span = joint.span;
+    if (const Attr a = lookup("axis")) {
+      if (auto v = values_.numbers(a, "axis", 3); v && Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]).norm() > 0) {
+        joint.axis = Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]).normalized();
+        joint.axis_span = values_.value_span(a, "axis");
+      }
+    }
+
+    const bool angular = joint.type == JointType::Revolute;
+    const bool linear = joint.type == JointType::Prismatic;
+    joint.limit_span = joint.span;
+    if (angular || linear) {
+      const Attr range = lookup("range");
+      const bool limited = values_.flag(lookup("limited"), "limited").value_or(range && compiler_.autolimits);
+      const Unit position = linear ? Unit::Meter : compiler_.degree ? Unit::Degree : Unit::Radian;
+      if (limited && range && values_.numbers(range, "range", 2)) {
+        joint.limit_span = values_.value_span(range, "range");
+        joint.lower = values_.quantity(range, "range", position, 0);
+        joint.upper = values_.quantity(range, "range", position, 1);
+      }
+      if (angular && !limited) joint.type = JointType::Continuous;
+    }
+    const bool rotational = !linear;
+    joint.armature = values_.quantity(lookup("armature"), "armature", rotational ? Unit::KilogramMeter2 : Unit::Kilogram);
+    joint.joint_damping = values_.quantity(lookup("damping"), "damping",
+                                           rotational ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter);
+    joint.joint_stiffness = values_.quantity(lookup("stiffness"), "stiffness",
+                                             rotational ? Unit::NewtonMeterPerRadian : Unit::NewtonPerMeter);
+    joint.joint_friction = values_.quantity(lookup("frictionloss"), "frictionloss", rotational ? Unit::NewtonMeter : Unit::Newton);
+    // A joint's own bound on the summed actuator force (actuatorfrcrange) is its effort limit.
+    if (const Attr a = lookup("actuatorfrcrange"); a && (angular || linear)) {
+      const bool limited = values_.flag(lookup("actuatorfrclimited"), "actuatorfrclimited").value_or(compiler_.autolimits);
+      if (auto v = values_.numbers(a, "actuatorfrcrange", 2); v && limited) {
+        const std::size_t i = std::abs((*v)[1]) >= std::abs((*v)[0]) ? 1 : 0;
+        joint.effort = values_.quantity(a, "actuatorfrcrange", angular ? Unit::NewtonMeter : Unit::Newton, i,
+                                        (*v)[i] < 0 ? -1.0 : 1.0);
+      }
+    }
+    // Unset quantities that only restate MuJoCo's zero defaults from a class stay as written.
+    result_.asset.joints.push_back(std::move(joint));
+    return 1;
+  }
+
+  // <equality><joint joint1 joint2 polycoef>: q1 = c0 + c1·q2 + c2·q2² + c3·q2³ + c4·q2⁴.
+  void read_equality_joint(const XMLElement* el) {
+    const char* cls = el->Attribute("class");
+    if (cls && !defaults_.has_class(cls)) {
+      values_.error(values_.value_span(own(el, "class"), "class"), fmt::format("unknown default class '{}'", cls));
+      return;
+    }
+    const auto& defs = defaults_.elements(cls ? cls : "main", "equality");
+    if (values_.flag(Defaults::lookup(el, defs, "active"), "active") == false) return;
+    const char* joint1 = el->Attribute("joint1");
+    const char* joint2 = el->Attribute("joint2");
+    const Span span = values_.element_span(el);
+    if (!joint1) {
+      values_.error(span, "<equality><joint> without joint1");
+      return;
+    }
+    auto follower = std::find_if(result_.asset.joints.begin(), result_.asset.joints.end(),
+                                 [&](const Joint& j) { return j.name.text == joint1; });
+    if (follower == result_.asset.joints.end()) {
+      values_.error(values_.value_span(own(el, "joint1"), "joint1"), fmt::format("<equality><joint>: unknown joint '{}'", joint1));
+      return;
+    }
+    if (!joint2) {
+      values_.unsupported(span, fmt::format("<equality><joint> holds '{}' at a fixed position (no joint2)", joint1))
+          .note("A joint held in place is no mimic; asset-lint does not model it.");
+      return;
+    }
+    const Attr coef = own(el, "polycoef");
+    auto c = coef ? values_.numbers(coef, "polycoef") : std::optional<std::vector<double>>(std::vector<double>{0, 1});
+    if (!c) return;
+    for (std::size_t i = 2; i < c->size(); ++i)
+      if ((*c)[i] != 0) {
+        values_.unsupported(values_.token_span(coef, "polycoef", i),
+                            fmt::format("coupling of '{}' is nonlinear (polycoef c{} = {})", joint1, i,
+                                        format_number((*c)[i])))
+            .note("asset-lint models only the linear part q1 = c0 + c1·q2 as a mimic (multiplier c1, offset c0).");
+        break;
+      }
+    if (follower->mimic) return;
+    Mimic mimic;
+    mimic.span = span;
+    mimic.reference = Name{joint2, values_.value_span(own(el, "joint2"), "joint2")};
+    const Unit offset_unit = follower->type == JointType::Prismatic ? Unit::Meter : Unit::Radian;  // polycoef is never in degrees
+    auto multiplier = c->size() > 1 && coef ? values_.quantity(coef, "polycoef", Unit::None, 1) : std::nullopt;
+    mimic.multiplier = multiplier ? *multiplier : Quantity::unauthored(c->size() > 1 ? (*c)[1] : 0.0, Unit::None);
+    auto offset = coef ? values_.quantity(coef, "polycoef", offset_unit, 0) : std::nullopt;
+    mimic.offset = offset ? *offset : Quantity::unauthored(0.0, offset_unit);
+    follower->mimic = std::move(mimic);
+  }
+
+  MjcfSources sources_;
+  ReadResult result_;
+  Values values_;
+  Compiler compiler_;
+  Defaults defaults_;
+};
+
+}  // namespace
+
+ReadResult read_mjcf(std::shared_ptr<const SourceFile> file, const FileSystem& files, const ReadOptions& options) {
+  return Reader(std::move(file), files, options).run();
+}
+
+bool looks_like_mjcf(std::string_view text) {
+  const xml::XmlScan scan = xml::scan_xml(text);
+  return !scan.tags.empty() && scan.tags.front().name == "mujoco";
+}
+
+}  // namespace assetlint::mjcf

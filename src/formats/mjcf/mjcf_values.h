@@ -1,0 +1,55 @@
+#pragma once
+// Reading MJCF attribute values into model quantities, with spans into whichever file
+// (model, include) and element (instance, default class) wrote them.
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "formats/mjcf/mjcf_defaults.h"
+#include "formats/mjcf/mjcf_sources.h"
+#include "model/quantity.h"
+
+namespace assetlint::mjcf {
+
+// <compiler> settings that change how values read (MuJoCo's defaults).
+struct Compiler {
+  bool degree = true;                      // angle="degree"
+  std::string eulerseq = "xyz";            // lower case: axes that move with the frame
+  bool autolimits = true;                  // limited="auto" means "limited when a range is given"
+  std::string inertiafromgeom = "auto";    // "true": <inertial> is ignored, geoms give mass and inertia
+  Span angle_span;                         // where angle= is written, for notes
+};
+
+class Values {
+ public:
+  Values(const MjcfSources& sources, std::vector<Diagnostic>& diagnostics) : sources_(sources), out_(diagnostics) {}
+
+  Span element_span(const tinyxml2::XMLElement* el) const { return sources_.document_of(el).element_span(el); }
+  Span value_span(const Attr& a, const char* name) const { return sources_.document_of(a.element).value_span(a.element, name); }
+  Span token_span(const Attr& a, const char* name, std::size_t i) const {
+    return sources_.document_of(a.element).token_span(a.element, name, i);
+  }
+
+  // All numbers of an attribute (`count` of them when count > 0); reports a parse error otherwise.
+  std::optional<std::vector<double>> numbers(const Attr& a, const char* name, std::size_t count = 0);
+  // Token `index` of the attribute as a quantity in `unit` (value × scale in model units).
+  OptQuantity quantity(const Attr& a, const char* name, Unit unit, std::size_t index = 0, double scale = 1.0);
+  // "true" / "false" / "auto" attributes; nullopt for "auto" or absent, reported when misspelt.
+  std::optional<bool> flag(const Attr& a, const char* name);
+
+  Diagnostic& error(const Span& span, std::string message);
+  Diagnostic& unsupported(const Span& span, std::string message);
+
+ private:
+  const MjcfSources& sources_;
+  std::vector<Diagnostic>& out_;
+};
+
+// The rotation an element writes with quat, axisangle, euler, xyaxes or zaxis (identity when none).
+Eigen::Matrix3d orientation(const tinyxml2::XMLElement* el, const std::vector<const tinyxml2::XMLElement*>& defaults,
+                            const Compiler& compiler, Values& values);
+// pos + orientation.
+Eigen::Isometry3d pose(const tinyxml2::XMLElement* el, const Compiler& compiler, Values& values);
+
+}  // namespace assetlint::mjcf

@@ -1,0 +1,97 @@
+#include "formats/usda/skipped_layers.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string_view>
+
+namespace assetlint::usda {
+namespace {
+
+constexpr std::size_t kMostNamed = 4;
+
+bool under(std::string_view path, std::string_view scope) {
+  if (scope.empty()) return true;
+  return path == scope || (path.starts_with(scope) && path.size() > scope.size() && path[scope.size()] == '/');
+}
+
+// A prim whose own opinions the physics rules read: a joint, a body, a scene, an
+// articulation; or a root prim (a whole robot brought in by reference).
+bool physics_prim(const ComposedPrim& prim) {
+  if (prim.type_name.find("Joint") != std::string::npos || prim.type_name == "PhysicsScene") return true;
+  if (prim.parent == static_cast<std::size_t>(-1)) return true;
+  return std::any_of(prim.api_schemas.begin(), prim.api_schemas.end(), [](const std::string& schema) {
+    return schema == "PhysicsRigidBodyAPI" || schema == "PhysicsMassAPI" || schema == "PhysicsArticulationRootAPI" ||
+           schema.starts_with("PhysicsDriveAPI") || schema.starts_with("PhysxJointAPI") ||
+           schema.starts_with("PhysxMimicJointAPI");
+  });
+}
+
+bool mass_known(const Link* link) { return link && link->inertial && link->inertial->mass_authored; }
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size() && i < kMostNamed; ++i) out += (i ? ", '" : "'") + names[i] + "'";
+  if (names.size() > kMostNamed) out += fmt::format(" and {} more", names.size() - kMostNamed);
+  return out;
+}
+
+void add_unique(std::vector<std::string>& list, const std::string& name) {
+  if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+}
+
+// The checks the asset could not run because values are missing in `scope`: joints
+// declared under it or attached to a body under it. `expect_joints`: the scope is where
+// joints are declared (the whole stage, a root prim, a joint), so finding none is a loss.
+std::vector<std::string> lost_checks(const Asset& asset, const std::string& scope, bool expect_joints) {
+  std::vector<std::string> notes;
+  std::size_t joints_in_scope = 0;
+  std::vector<std::string> massless_driven;
+  std::vector<std::string> massless_links;
+  for (const Joint& joint : asset.joints) {
+    if (!under(joint.name.text, scope) && !under(joint.parent.text, scope) && !under(joint.child.text, scope)) continue;
+    ++joints_in_scope;
+    if (!joint.drive) continue;
+    bool lacking = false;
+    for (const Name* body : {&joint.parent, &joint.child}) {
+      if (body->text.empty()) continue;
+      const Link* link = asset.find_link(body->text);
+      if (link && !mass_known(link)) {
+        add_unique(massless_links, body->text);
+        lacking = true;
+      }
+    }
+    if (lacking) add_unique(massless_driven, joint.name.text);
+  }
+  if (joints_in_scope == 0) {
+    if (!expect_joints) return notes;
+    notes.push_back(fmt::format("no joint {} was read: the joint, drive, mimic and inertia rules checked nothing there",
+                                scope.empty() ? std::string("of the stage") : fmt::format("under '{}'", scope)));
+  } else if (!massless_driven.empty()) {
+    notes.push_back(fmt::format("drive-natural-frequency, drive-implicit-attenuation and drive-damping-ratio not checked "
+                                "for {}: no layer read gives a mass to {}",
+                                quoted_list(massless_driven), quoted_list(massless_links)));
+  }
+  return notes;
+}
+
+}  // namespace
+
+void weigh_skipped_arcs(const Stage& stage, ReadResult& result) {
+  for (const Stage::SkippedArc& arc : stage.skipped) {
+    if (arc.diagnostic >= result.diagnostics.size()) continue;
+    bool expect_joints = true;
+    if (!arc.scope.empty()) {
+      const ComposedPrim* prim = stage.find(arc.scope);
+      if (!prim || !physics_prim(*prim)) continue;
+      expect_joints = prim->parent == static_cast<std::size_t>(-1) || prim->type_name.find("Joint") != std::string::npos;
+    }
+    const std::vector<std::string> lost = lost_checks(result.asset, arc.scope, expect_joints);
+    if (lost.empty()) continue;
+    Diagnostic& d = result.diagnostics[arc.diagnostic];
+    d.severity = std::max(d.severity, Severity::Warning);
+    for (const std::string& note : lost) d.note(note);
+  }
+}
+
+}  // namespace assetlint::usda

@@ -1,0 +1,367 @@
+#include "physics/articulation.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
+#include <deque>
+#include <numeric>
+
+#include "util/numbers.h"
+
+namespace assetlint::physics {
+
+namespace {
+
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+// Spatial inertia about the body origin, [angular; linear] ordering.
+Matrix6 spatial_inertia(double mass, const Eigen::Vector3d& com, const Eigen::Matrix3d& about_com) {
+  const Eigen::Matrix3d c = skew(com);
+  Matrix6 inertia;
+  inertia.topLeftCorner<3, 3>() = about_com + mass * c * c.transpose();
+  inertia.topRightCorner<3, 3>() = mass * c;
+  inertia.bottomLeftCorner<3, 3>() = mass * c.transpose();
+  inertia.bottomRightCorner<3, 3>() = mass * Eigen::Matrix3d::Identity();
+  return inertia;
+}
+
+// Motion transform from parent to child coordinates, the child frame placed in the parent at `pose`.
+Matrix6 motion_transform(const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d e = pose.linear().transpose();
+  Matrix6 x = Matrix6::Zero();
+  x.topLeftCorner<3, 3>() = e;
+  x.bottomRightCorner<3, 3>() = e;
+  x.bottomLeftCorner<3, 3>() = -e * skew(pose.translation());
+  return x;
+}
+
+bool is_multi_dof(JointType type) {
+  return type == JointType::Floating || type == JointType::Planar || type == JointType::Spherical ||
+         type == JointType::Generic;
+}
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+std::string Body::name() const { return links.empty() ? std::string("world") : links.front()->name.text; }
+
+Articulation::FreeRoot default_free_root(const Asset& asset) {
+  return asset.format == SourceFormat::Usda ? Articulation::FreeRoot::Floating : Articulation::FreeRoot::Fixed;
+}
+
+Articulation::Articulation(const Asset& asset) : Articulation(asset, default_free_root(asset)) {}
+
+Articulation::Articulation(const Asset& asset, FreeRoot free_root) {
+  build(asset, free_root);
+  solve();
+}
+
+const Body* Articulation::body_of(std::string_view link) const {
+  auto it = body_index_.find(link);
+  return it == body_index_.end() ? nullptr : &bodies_[static_cast<std::size_t>(it->second)];
+}
+
+const Body* Articulation::side(const Joint& joint, int which) const {
+  return body_of(which == 0 ? joint.parent.text : joint.child.text);
+}
+
+void Articulation::build(const Asset& asset, FreeRoot free_root) {
+  const std::size_t n = asset.links.size();
+  std::unordered_map<std::string_view, int> link_index;
+  for (std::size_t i = 0; i < n; ++i) link_index.emplace(asset.links[i].name.text, static_cast<int>(i));
+  const auto index_of = [&](const Name& name) {
+    auto it = link_index.find(name.text);
+    return it == link_index.end() ? -1 : it->second;
+  };
+
+  // Rigid bodies: links welded by fixed joints. A fixed joint to nothing (the world, a
+  // static prim) or to a link named "world" welds its component to the world.
+  UnionFind welded(n);
+  std::vector<bool> to_world(n, false);
+  const auto world_link = [&](int i) {
+    const Link& link = asset.links[static_cast<std::size_t>(i)];
+    return link.kinematic || (asset.format == SourceFormat::Urdf && link.name.text == "world" && !link.inertial);
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    if (world_link(static_cast<int>(i))) to_world[i] = true;
+  for (const Joint& joint : asset.joints) {
+    if (joint.type != JointType::Fixed) continue;
+    const int a = index_of(joint.parent), b = index_of(joint.child);
+    if (a >= 0 && b >= 0) welded.unite(a, b);
+    else if (a >= 0 && joint.child.text.empty()) to_world[static_cast<std::size_t>(a)] = true;
+    else if (b >= 0 && joint.parent.text.empty()) to_world[static_cast<std::size_t>(b)] = true;
+  }
+
+  // One Body per component, its frame the first link's; link frames placed by walking
+  // the fixed joints.
+  std::unordered_multimap<int, const Joint*> fixed_at;
+  for (const Joint& joint : asset.joints) {
+    if (joint.type != JointType::Fixed) continue;
+    const int a = index_of(joint.parent), b = index_of(joint.child);
+    if (a < 0 || b < 0) continue;
+    fixed_at.emplace(a, &joint);
+    fixed_at.emplace(b, &joint);
+  }
+  std::vector<int> body_of_link(n, -1);
+  std::vector<Eigen::Isometry3d> link_pose(n, Eigen::Isometry3d::Identity());
+  for (std::size_t start = 0; start < n; ++start) {
+    if (body_of_link[start] >= 0) continue;
+    const int body = static_cast<int>(bodies_.size());
+    bodies_.emplace_back();
+    std::deque<int> pending{static_cast<int>(start)};
+    body_of_link[start] = body;
+    while (!pending.empty()) {
+      const int at = pending.front();
+      pending.pop_front();
+      Body& b = bodies_.back();
+      b.links.push_back(&asset.links[static_cast<std::size_t>(at)]);
+      b.link_in_body.push_back(link_pose[static_cast<std::size_t>(at)]);
+      if (to_world[static_cast<std::size_t>(at)]) b.world = true;
+      auto [first, last] = fixed_at.equal_range(at);
+      for (auto it = first; it != last; ++it) {
+        const Joint& joint = *it->second;
+        const bool forward = index_of(joint.parent) == at;
+        const int next = forward ? index_of(joint.child) : index_of(joint.parent);
+        if (body_of_link[static_cast<std::size_t>(next)] >= 0) continue;  // a weld loop: first path wins
+        const auto& f = joint.frame_in_link;
+        const Eigen::Isometry3d next_in_at = forward ? f[0] * f[1].inverse() : f[1] * f[0].inverse();
+        link_pose[static_cast<std::size_t>(next)] = link_pose[static_cast<std::size_t>(at)] * next_in_at;
+        body_of_link[static_cast<std::size_t>(next)] = body;
+        pending.push_back(next);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) body_index_.emplace(asset.links[i].name.text, body_of_link[i]);
+
+  // Combined mass properties. USD: a body without authored mass, inertia or COM gets them
+  // from its colliders, which a text linter cannot see. URDF: a link without <inertial>
+  // is massless.
+  for (Body& body : bodies_) {
+    if (body.world) continue;
+    double mass = 0;
+    Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < body.links.size(); ++i) {
+      const Link& link = *body.links[i];
+      const auto& in = link.inertial;
+      const bool usd = asset.format == SourceFormat::Usda;
+      if (!in ? usd : (!in->mass_authored || !in->inertia_authored || !in->com_authored || !(in->mass.value >= 0))) {
+        body.unknown_links.push_back(link.name.text);
+        continue;
+      }
+      if (!in) continue;
+      mass += in->mass.value;
+      moment += in->mass.value * (body.link_in_body[i] * in->com);
+    }
+    if (!body.unknown_links.empty()) continue;
+    if (!(mass > 0)) {
+      for (const Link* link : body.links) body.unknown_links.push_back(link->name.text);
+      continue;
+    }
+    body.mass = mass;
+    body.com = moment / mass;
+    for (std::size_t i = 0; i < body.links.size(); ++i) {
+      const auto& in = body.links[i]->inertial;
+      if (!in) continue;
+      const Eigen::Matrix3d r = body.link_in_body[i].linear();
+      const Eigen::Vector3d d = body.link_in_body[i] * in->com - body.com;
+      body.inertia += r * in->inertia * r.transpose() +
+                      in->mass.value * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+    }
+    body.mass_known = true;
+  }
+
+  // The tree of movable joints, found breadth-first from the world; a tree with no world
+  // in it starts at a body no joint has as its child.
+  const int world = static_cast<int>(bodies_.size());
+  bodies_.emplace_back();
+  bodies_.back().world = true;
+  struct Edge {
+    const Joint* joint;
+    int a, b;  // body on the joint's parent/body0 side and child/body1 side
+  };
+  std::vector<Edge> edges;
+  std::vector<std::vector<int>> incident(bodies_.size());
+  std::vector<bool> has_parent(bodies_.size(), false);
+  for (const Joint& joint : asset.joints) {
+    if (joint.type == JointType::Fixed) continue;
+    const int pa = index_of(joint.parent), pb = index_of(joint.child);
+    const int a = pa >= 0 ? body_of_link[static_cast<std::size_t>(pa)] : joint.parent.text.empty() ? world : -1;
+    const int b = pb >= 0 ? body_of_link[static_cast<std::size_t>(pb)] : joint.child.text.empty() ? world : -1;
+    if (a < 0 || b < 0 || a == b) continue;  // an undefined link, or a joint inside one body
+    const int e = static_cast<int>(edges.size());
+    edges.push_back({&joint, a, b});
+    incident[static_cast<std::size_t>(a)].push_back(e);
+    incident[static_cast<std::size_t>(b)].push_back(e);
+    has_parent[static_cast<std::size_t>(b)] = true;
+  }
+  floating_.assign(bodies_.size(), false);
+  std::vector<bool> visited(bodies_.size(), false);
+  std::vector<bool> used(edges.size(), false);
+  const auto grow = [&](int root) {
+    roots_.push_back(root);
+    visited[static_cast<std::size_t>(root)] = true;
+    std::deque<int> pending{root};
+    while (!pending.empty()) {
+      const int at = pending.front();
+      pending.pop_front();
+      for (int e : incident[static_cast<std::size_t>(at)]) {
+        if (used[static_cast<std::size_t>(e)]) continue;
+        used[static_cast<std::size_t>(e)] = true;
+        const Edge& edge = edges[static_cast<std::size_t>(e)];
+        const bool forward = edge.a == at;
+        const int next = forward ? edge.b : edge.a;
+        if (visited[static_cast<std::size_t>(next)]) continue;  // a loop-closing joint: not in the tree
+        visited[static_cast<std::size_t>(next)] = true;
+        TreeJoint tj;
+        tj.joint = edge.joint;
+        tj.parent = at;
+        tj.child = next;
+        tj.armature = edge.joint->armature ? edge.joint->armature->value : 0.0;
+        tj.modelled = !is_multi_dof(edge.joint->type);
+        // The joint frame in each body; the world side needs none (it does not move).
+        const auto frame_in = [&](int body, int which) {
+          const Name& name = which == 0 ? edge.joint->parent : edge.joint->child;
+          const int link = index_of(name);
+          const Eigen::Isometry3d& f = edge.joint->frame_in_link[static_cast<std::size_t>(which)];
+          return body == world || link < 0 ? f : link_pose[static_cast<std::size_t>(link)] * f;
+        };
+        const Eigen::Isometry3d in_parent = frame_in(at, forward ? 0 : 1);
+        const Eigen::Isometry3d in_child = frame_in(next, forward ? 1 : 0);
+        tj.child_in_parent = in_parent * in_child.inverse();
+        const Eigen::Vector3d axis = (in_child.linear() * edge.joint->axis).normalized();
+        if (edge.joint->type == JointType::Prismatic) {
+          tj.motion.tail<3>() = axis;
+        } else {
+          tj.motion.head<3>() = axis;
+          tj.motion.tail<3>() = in_child.translation().cross(axis);
+        }
+        tree_index_.emplace(edge.joint, static_cast<int>(tree_.size()));
+        tree_.push_back(tj);
+        pending.push_back(next);
+      }
+    }
+  };
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].world && !visited[b]) grow(static_cast<int>(b));
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      if (visited[b] || (pass == 0 && has_parent[b])) continue;
+      if (free_root == FreeRoot::Fixed) bodies_[b].world = true;  // Isaac's URDF importer: fixBase
+      else floating_[b] = true;
+      grow(static_cast<int>(b));
+    }
+}
+
+void Articulation::solve() {
+  results_.assign(tree_.size(), {});
+  // Which tree each body belongs to, what in it has unknown mass, and which multi-DOF
+  // joint (not modelled) it holds.
+  std::vector<int> tree_of(bodies_.size(), -1);
+  for (std::size_t t = 0; t < roots_.size(); ++t) tree_of[static_cast<std::size_t>(roots_[t])] = static_cast<int>(t);
+  for (const TreeJoint& j : tree_) tree_of[static_cast<std::size_t>(j.child)] = tree_of[static_cast<std::size_t>(j.parent)];
+  std::vector<std::string> unsupported(roots_.size());
+  for (const TreeJoint& j : tree_) {
+    std::string& reason = unsupported[static_cast<std::size_t>(tree_of[static_cast<std::size_t>(j.child)])];
+    if (!j.modelled && reason.empty())
+      reason = fmt::format("joint '{}' is {}, not modelled", j.joint->name.text, joint_type_name(j.joint->type));
+  }
+  std::vector<std::vector<std::string>> unknown(roots_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (tree_of[b] < 0 || bodies_[b].world) continue;
+    for (const auto& name : bodies_[b].unknown_links) unknown[static_cast<std::size_t>(tree_of[b])].push_back(name);
+  }
+
+  // Inward: articulated-body inertias, leaves first.
+  std::vector<Matrix6> articulated(bodies_.size(), Matrix6::Zero());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].mass_known && !bodies_[b].world)
+      articulated[b] = spatial_inertia(bodies_[b].mass, bodies_[b].com, bodies_[b].inertia);
+  std::vector<Vector6> u(tree_.size());
+  std::vector<double> d(tree_.size());
+  std::vector<Matrix6> x(tree_.size());
+  for (std::size_t k = tree_.size(); k-- > 0;) {
+    const TreeJoint& j = tree_[k];
+    const Matrix6& child = articulated[static_cast<std::size_t>(j.child)];
+    x[k] = motion_transform(j.child_in_parent);
+    u[k] = child * j.motion;
+    d[k] = j.motion.dot(u[k]) + j.armature;
+    if (!bodies_[static_cast<std::size_t>(j.parent)].world && d[k] > 0)
+      articulated[static_cast<std::size_t>(j.parent)] += x[k].transpose() * (child - u[k] * u[k].transpose() / d[k]) * x[k];
+  }
+  // Outward: Φ, the inverse inertia of the whole tree at each body (0 for the world, the
+  // inverse of the articulated inertia at a floating root), and each joint's r from it.
+  std::vector<Matrix6> phi(bodies_.size(), Matrix6::Zero());
+  std::vector<bool> singular(bodies_.size(), false);
+  for (int root : roots_) {
+    if (!floating_[static_cast<std::size_t>(root)]) continue;
+    Eigen::FullPivLU<Matrix6> lu(articulated[static_cast<std::size_t>(root)]);
+    if (lu.isInvertible()) phi[static_cast<std::size_t>(root)] = lu.inverse();
+    else singular[static_cast<std::size_t>(root)] = true;
+  }
+  for (std::size_t k = 0; k < tree_.size(); ++k) {
+    const TreeJoint& j = tree_[k];
+    const std::size_t p = static_cast<std::size_t>(j.parent), c = static_cast<std::size_t>(j.child);
+    ArticulatedInertia& result = results_[k];
+    singular[c] = singular[p] || !(d[k] > 0);
+    const auto& missing = unknown[static_cast<std::size_t>(tree_of[c])];
+    if (const std::string& reason = unsupported[static_cast<std::size_t>(tree_of[c])]; !reason.empty()) {
+      result.reason = reason;
+      continue;
+    }
+    if (!missing.empty()) {
+      result.unknown_links = missing;
+      continue;
+    }
+    if (singular[c]) {
+      result.reason = "the bodies it moves have no mass";
+      continue;
+    }
+    const Matrix6 seen = x[k] * phi[p] * x[k].transpose();
+    result.response = 1.0 / d[k] + u[k].dot(seen * u[k]) / (d[k] * d[k]);
+    result.value = 1.0 / result.response;
+    result.known = true;
+    const Matrix6 project = Matrix6::Identity() - j.motion * u[k].transpose() / d[k];
+    phi[c] = project * seen * project.transpose() + j.motion * j.motion.transpose() / d[k];
+  }
+}
+
+ArticulatedInertia Articulation::inertia(const Joint& joint) const {
+  auto it = tree_index_.find(&joint);
+  if (it != tree_index_.end()) return results_[static_cast<std::size_t>(it->second)];
+  ArticulatedInertia none;
+  none.reason = "the joint is not part of the articulation's tree";
+  return none;
+}
+
+std::optional<double> Articulation::inertia_about_axis(const Body& body, const Joint& joint, int which) const {
+  if (!body.mass_known || body.world) return std::nullopt;
+  if (joint.type == JointType::Prismatic) return body.mass;
+  const std::string& link = which == 0 ? joint.parent.text : joint.child.text;
+  Eigen::Isometry3d frame = joint.frame_in_link[static_cast<std::size_t>(which)];
+  for (std::size_t i = 0; i < body.links.size(); ++i)
+    if (body.links[i]->name.text == link) frame = body.link_in_body[i] * frame;
+  const Eigen::Vector3d direction = (frame.linear() * joint.axis).normalized();
+  const Eigen::Vector3d offset = body.com - frame.translation();
+  const Eigen::Vector3d across = offset - offset.dot(direction) * direction;
+  return direction.dot(body.inertia * direction) + body.mass * across.squaredNorm();
+}
+
+}  // namespace assetlint::physics

@@ -1,0 +1,92 @@
+#pragma once
+// The articulation PhysX builds from an asset (docs/physics.md "Articulated inertia"):
+// links welded by fixed joints are one rigid body, bodies welded to the world are the
+// world, and each movable joint's drive row sees the articulated inertia 1/r, with
+// r = (M⁻¹)ᵢᵢ of the joint-space mass matrix M (armature on its diagonal, mimic rows aside).
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "model/asset.h"
+
+namespace assetlint::physics {
+
+// One rigid body: links welded together by fixed joints.
+struct Body {
+  std::vector<const Link*> links;
+  std::vector<Eigen::Isometry3d> link_in_body;  // each link's frame in the body frame (the first link's)
+  bool world = false;  // welded to the world (a fixed base, a static or kinematic body)
+  // Combined mass properties in the body frame, when every link states them.
+  bool mass_known = false;
+  double mass = 0;
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // about the COM
+  std::vector<std::string> unknown_links;  // links whose mass, inertia or COM is not authored
+  std::string name() const;                // the first link's name
+};
+
+// A movable single-DOF joint of the tree, between two bodies.
+struct TreeJoint {
+  const Joint* joint = nullptr;
+  int parent = -1;  // body index on the root side
+  int child = -1;   // body index on the leaf side
+  // The motion subspace S in the child body frame at q = 0 ([angular; linear]).
+  Eigen::Matrix<double, 6, 1> motion = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Isometry3d child_in_parent = Eigen::Isometry3d::Identity();  // at q = 0
+  double armature = 0;
+  bool modelled = true;  // false for multi-DOF joints: the trees holding one stay unknown
+};
+
+// What a joint's drive row sees.
+struct ArticulatedInertia {
+  bool known = false;
+  double value = 0;     // 1/r, kg·m² (kg for prismatic joints)
+  double response = 0;  // r
+  std::vector<std::string> unknown_links;  // why not known: bodies in the articulation without mass
+  std::string reason;                      // when not known and no link is to blame
+};
+
+class Articulation {
+ public:
+  // How a tree whose root is not welded to the world is based. Isaac's URDF importer fixes
+  // the base by default (fixBase); a USD articulation without a joint to the world floats.
+  enum class FreeRoot { Fixed, Floating };
+  explicit Articulation(const Asset& asset);
+  Articulation(const Asset& asset, FreeRoot free_root);
+
+  const std::vector<Body>& bodies() const { return bodies_; }
+  const Body* body_of(std::string_view link) const;
+  // The body on one side of a joint: [0] parent/body0, [1] child/body1; null for the world
+  // when the side names no link.
+  const Body* side(const Joint& joint, int which) const;
+
+  // 1/(M⁻¹)ᵢᵢ for a movable single-DOF joint. All joints of the asset are computed together
+  // in O(n) time and memory (n bodies): one inward pass for the articulated-body inertias,
+  // one outward pass for each body's inverse inertia as the whole tree sees it; each joint's
+  // r is then a 6-vector product. No joint-space matrix is formed.
+  ArticulatedInertia inertia(const Joint& joint) const;
+
+  // A body's moment of inertia about a joint's axis line (parallel-axis shifted; mass for
+  // prismatic joints), when its mass properties are known.
+  std::optional<double> inertia_about_axis(const Body& body, const Joint& joint, int which) const;
+
+ private:
+  void build(const Asset& asset, FreeRoot free_root);
+  void solve();
+
+  std::vector<Body> bodies_;
+  std::vector<TreeJoint> tree_;                     // parents before children
+  std::vector<int> roots_;                          // body indices, one per tree
+  std::vector<bool> floating_;                      // per body: a floating root
+  std::unordered_map<std::string_view, int> body_index_;  // link name → body
+  std::unordered_map<const Joint*, int> tree_index_;      // joint → tree_ entry
+  std::vector<ArticulatedInertia> results_;         // per tree_ entry
+};
+
+// The tree's free-root convention for an asset's format.
+Articulation::FreeRoot default_free_root(const Asset& asset);
+
+}  // namespace assetlint::physics

@@ -1,0 +1,153 @@
+// `asset-lint tune --apply / --diff`: exact bytes, idempotence, a new asset-lint.toml,
+// USD per-degree values and mimic velocity removal.
+#include <catch2/catch.hpp>
+
+#include "config/toml_edit.h"
+#include "test_support.h"
+
+using namespace assetlint;
+using assetlint::test::read_file;
+using assetlint::test::run_cli;
+using assetlint::test::write_file;
+
+namespace {
+
+const std::vector<std::string> kGuideFlags = {
+    "--payload-kg", "5",   "--friction", "0.3",   "--gravity", "10",    "--lever-arm-m",      "0.04",
+    "--torque-margin", "1", "--finger-speed-m-s", "0.15", "--stroke-m", "0.085", "--target-delta-deg", "5",
+    "--rate", "250", "--position-iterations", "64"};
+
+std::vector<std::string> tune(const std::string& asset, std::vector<std::string> extra) {
+  std::vector<std::string> args = {"tune", asset};
+  args.insert(args.end(), kGuideFlags.begin(), kGuideFlags.end());
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+// The URDF fixture with a weak effort and velocity, as a badly tuned asset would have.
+std::string weak_urdf() {
+  std::string text = read_file(test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf");
+  const std::string limit = R"(<limit lower="0" upper="0.820305" effort="24" velocity="2.9"/>)";
+  const auto at = text.find(limit);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, limit.size(), R"(<limit lower="0" upper="0.820305" effort="12" velocity="1"/>)");
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("toml edit: values rewritten in place, keys added after the table's last, comments kept", "[tune]") {
+  const std::string text =
+      "# project settings\n[gripper]\npayload_kg = 5\n\n[drives.finger_joint]  # J0\nstiffness = 5700   # the "
+      "original\narmature = 0\n\n[drives.other]\nstiffness = 1\n";
+  auto edit = config::set_table_numbers(text, "drives", "finger_joint",
+                                        {{"stiffness", "275", true}, {"damping", "0.06089", true}, {"max_force", "24", false}});
+  REQUIRE_FALSE(edit.error);
+  CHECK(edit.text ==
+        "# project settings\n[gripper]\npayload_kg = 5\n\n[drives.finger_joint]  # J0\nstiffness = 275   # the "
+        "original\narmature = 0\ndamping = 0.06089\n\n[drives.other]\nstiffness = 1\n");
+  CHECK(edit.changes == std::vector<std::string>{"[drives.finger_joint] stiffness = 275 (was 5700)",
+                                                 "[drives.finger_joint] damping = 0.06089"});
+  // Twice: nothing changes.
+  auto again = config::set_table_numbers(edit.text, "drives", "finger_joint", {{"stiffness", "275", true}, {"damping", "0.06089", true}});
+  CHECK(again.text == edit.text);
+  CHECK(again.changes.empty());
+  // A missing table is appended; CRLF files keep CRLF; names that are not bare keys are quoted.
+  auto added = config::set_table_numbers("[gripper]\r\npayload_kg = 5\r\n", "drives", "/robot/joints/j0", {{"stiffness", "1", true}});
+  CHECK(added.text == "[gripper]\r\npayload_kg = 5\r\n\r\n[drives.\"/robot/joints/j0\"]\r\nstiffness = 1\r\n");
+  auto inline_table = config::set_table_numbers("drives = { j0 = { stiffness = 1 } }\n", "drives", "j0", {{"stiffness", "2", true}});
+  CHECK(inline_table.error);
+}
+
+TEST_CASE("tune --diff and --apply on URDF: <limit> and [drives.<joint>], byte-exact and idempotent", "[tune][cli]") {
+  test::TempDir dir;
+  write_file(dir.path() / "gripper.urdf", weak_urdf());
+  write_file(dir.path() / "asset-lint.toml", "# gripper\n[drives.finger_joint]\nstiffness = 5700 # the original\n");
+  auto diff = run_cli(tune("gripper.urdf", {"--diff"}), dir.path());
+  CHECK(diff.exit_code == 1);
+  CHECK(diff.out ==
+        "--- a/gripper.urdf\n+++ b/gripper.urdf\n@@ -58,7 +58,7 @@\n"
+        "     <parent link=\"base_link\"/>\n     <child link=\"left_outer_knuckle\"/>\n     <axis xyz=\"1 0 0\"/>\n"
+        "-    <limit lower=\"0\" upper=\"0.820305\" effort=\"12\" velocity=\"1\"/>\n"
+        "+    <limit lower=\"0\" upper=\"0.820305\" effort=\"24\" velocity=\"2.9\"/>\n"
+        "   </joint>\n   <joint name=\"left_inner_knuckle_joint\" type=\"revolute\">\n"
+        "     <origin xyz=\"0 -0.0127 0.0614\" rpy=\"0 0 0\"/>\n"
+        "--- a/asset-lint.toml\n+++ b/asset-lint.toml\n@@ -1,3 +1,4 @@\n # gripper\n [drives.finger_joint]\n"
+        "-stiffness = 5700 # the original\n+stiffness = 275 # the original\n+damping = 0.06089\n");
+  CHECK(read_file(dir.path() / "gripper.urdf") == weak_urdf());  // --diff writes nothing
+
+  auto applied = run_cli(tune("gripper.urdf", {"--apply"}), dir.path());
+  CHECK(applied.exit_code == 0);
+  CHECK(applied.err ==
+        "asset-lint tune: gripper.urdf: <limit effort> 12 → 24\n"
+        "asset-lint tune: gripper.urdf: <limit velocity> 1 → 2.9\n"
+        "asset-lint tune: asset-lint.toml: [drives.finger_joint] stiffness = 275 (was 5700)\n"
+        "asset-lint tune: asset-lint.toml: [drives.finger_joint] damping = 0.06089\n");
+  CHECK(read_file(dir.path() / "asset-lint.toml") ==
+        "# gripper\n[drives.finger_joint]\nstiffness = 275 # the original\ndamping = 0.06089\n");
+  const std::string urdf = read_file(dir.path() / "gripper.urdf");
+  CHECK(urdf == read_file(test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf"));
+
+  auto again = run_cli(tune("gripper.urdf", {"--apply"}), dir.path());
+  CHECK(again.exit_code == 0);
+  CHECK(again.err == "asset-lint tune: nothing to change\n");
+  CHECK(read_file(dir.path() / "gripper.urdf") == urdf);
+  CHECK(run_cli(tune("gripper.urdf", {"--diff"}), dir.path()).exit_code == 0);
+}
+
+TEST_CASE("tune --apply creates asset-lint.toml beside a URDF that has none", "[tune][cli]") {
+  test::TempDir dir;
+  for (auto up = dir.path().parent_path(); !up.empty() && up != up.root_path(); up = up.parent_path())
+    if (std::filesystem::exists(up / "asset-lint.toml")) {
+      WARN("skipped: " << (up / "asset-lint.toml") << " above the temporary directory would be the nearest");
+      return;
+    }
+  std::filesystem::create_directories(dir.path() / "robot");
+  write_file(dir.path() / "robot" / "gripper.urdf", weak_urdf());
+  auto diff = run_cli(tune("robot/gripper.urdf", {"--diff"}), dir.path());
+  CHECK(diff.exit_code == 1);
+  CHECK(diff.out.find("--- /dev/null\n+++ b/robot/asset-lint.toml\n@@ -0,0 +1,3 @@\n+[drives.finger_joint]\n"
+                      "+stiffness = 275\n+damping = 0.06089\n") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "robot" / "asset-lint.toml"));
+  CHECK(run_cli(tune("robot/gripper.urdf", {"--apply"}), dir.path()).exit_code == 0);
+  CHECK(read_file(dir.path() / "robot" / "asset-lint.toml") == "[drives.finger_joint]\nstiffness = 275\ndamping = 0.06089\n");
+}
+
+TEST_CASE("tune --apply on USD: per-degree gains, max force and velocity, none on the mimics", "[tune][cli]") {
+  test::TempDir dir;
+  std::string text = read_file(test::fixtures_dir() / "usda" / "robotiq_2f85" / "robotiq_2f85.usda");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+  };
+  replace("drive:angular:physics:stiffness = 4.8", "drive:angular:physics:stiffness = 99.48");
+  replace("            float drive:angular:physics:maxForce = 24\n", "");
+  replace("physxJoint:maxJointVelocity = 166.16", "physxJoint:maxJointVelocity = 50");
+  // One mimic with the max joint velocity the guide says to leave unset.
+  replace("prepend apiSchemas = [\"PhysxMimicJointAPI:rotX\"]\n        )\n        {\n            uniform token "
+          "physics:axis = \"X\"\n            rel physics:body0 = </robotiq_2f85/base_link>\n            rel "
+          "physics:body1 = </robotiq_2f85/left_inner_knuckle>",
+          "prepend apiSchemas = [\"PhysxMimicJointAPI:rotX\", \"PhysxJointAPI\"]\n        )\n        {\n            "
+          "float physxJoint:maxJointVelocity = 10000\n            uniform token physics:axis = \"X\"\n            rel "
+          "physics:body0 = </robotiq_2f85/base_link>\n            rel physics:body1 = </robotiq_2f85/left_inner_knuckle>");
+  write_file(dir.path() / "gripper.usda", text);
+  auto applied = run_cli(tune("gripper.usda", {"--apply"}), dir.path());
+  CHECK(applied.exit_code == 0);
+  CHECK(applied.err ==
+        "asset-lint tune: gripper.usda: drive:angular:physics:maxForce = 24\n"
+        "asset-lint tune: gripper.usda: drive:angular:physics:stiffness 99.48 → 4.8\n"
+        "asset-lint tune: gripper.usda: drive:angular:physics:damping 0.00106 → 0.001063\n"
+        "asset-lint tune: gripper.usda: physxJoint:maxJointVelocity 50 → 166\n"
+        "asset-lint tune: gripper.usda: physxJoint:maxJointVelocity removed from mimic "
+        "'/robotiq_2f85/joints/left_inner_knuckle_joint'\n");
+  const std::string after = read_file(dir.path() / "gripper.usda");
+  CHECK(after.find("            float drive:angular:physics:damping = 0.001063\n"
+                   "            float drive:angular:physics:maxForce = 24\n"
+                   "            float drive:angular:physics:stiffness = 4.8\n") != std::string::npos);
+  CHECK(after.find("float physxJoint:maxJointVelocity = 166\n") != std::string::npos);
+  CHECK(after.find("10000") == std::string::npos);
+  auto again = run_cli(tune("gripper.usda", {"--apply"}), dir.path());
+  CHECK(again.err == "asset-lint tune: nothing to change\n");
+  CHECK(read_file(dir.path() / "gripper.usda") == after);
+}

@@ -1,0 +1,35 @@
+#pragma once
+// The time series `asset-lint simulate` steps (docs/simulate.md): PhysX's implicit drive
+// row on one degree of freedom (src/physics/drive_row.h) beside the explicit spring at
+// the same step h, frame by frame.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands/simulate_metrics.h"
+#include "physics/drive_row.h"
+
+namespace assetlint::commands {
+
+struct SimulationSetup {
+  physics::DriveRow row;
+  physics::FrameLimits limits;
+  double from = 0;    // rad (m)
+  double target = 0;  // rad (m)
+  double load = 0;    // N·m (N): a constant torque on the joint, against the drive when it opposes the motion
+  int frames = 0;
+};
+
+struct SimulationRun {
+  std::vector<Sample> implicit;  // one sample per frame, the first at t = 0
+  std::vector<Sample> explicit_spring;  // stops at divergence
+  Metrics implicit_metrics;
+  Metrics explicit_metrics;
+};
+
+// Solver steps (frames × sub-steps) a run may take: `simulate` refuses longer requests.
+inline constexpr double kMaxSolverSteps = 2e7;
+
+SimulationRun run_simulation(const SimulationSetup& setup);
+
+}  // namespace assetlint::commands

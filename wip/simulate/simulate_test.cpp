@@ -1,0 +1,159 @@
+// `asset-lint simulate`: the stepper against closed forms, the guide's cases (PHYSICS.md
+// §2–3, issue 14 §4), a stalling load, the outputs (JSON, CSV, SVG rendered by
+// rsvg-convert) and bad input.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "commands/simulate_run.h"
+#include "test_support.h"
+
+using namespace assetlint;
+using assetlint::test::read_file;
+using assetlint::test::run_cli;
+using assetlint::test::write_file;
+
+namespace {
+
+const std::string kUrdf = "fixtures/robotiq_2f85/robotiq_2f85.urdf";
+
+physics::SimulationRate rate(double hz, double iterations, physics::Solver solver) {
+  physics::SimulationRate r;
+  r.timesteps_per_second = hz;
+  r.position_iterations = iterations;
+  r.solver = solver;
+  return r;
+}
+
+// The URDF fixture with [drives.finger_joint] from a temporary asset-lint.toml.
+struct Gripper {
+  test::TempDir dir;
+  explicit Gripper(const std::string& drive) {
+    write_file(dir.path() / "gripper.urdf", read_file(test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf"));
+    write_file(dir.path() / "asset-lint.toml", "[drives.finger_joint]\n" + drive);
+  }
+  nlohmann::json run(std::vector<std::string> extra) const {
+    std::vector<std::string> args = {"simulate", "gripper.urdf", "--output-format", "json"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    auto r = run_cli(args, dir.path());
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(r.out);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("simulate: a critically damped, well-resolved step matches the closed form within 1 %", "[simulate]") {
+  // I = 1, k = 100 (nf = 10 rad/s), d = 2·sqrt(k·I) = 20; TGS 1000 Hz × 4: h·nf = 0.0025.
+  commands::SimulationSetup setup;
+  setup.row = physics::drive_row(rate(1000, 4, physics::Solver::TGS), 100.0, 20.0, DriveType::Force, 1.0);
+  setup.from = 0;
+  setup.target = 1;
+  setup.frames = 2000;
+  const auto run = commands::run_simulation(setup);
+  double worst = 0;
+  for (const auto& s : run.implicit) {
+    const double w = 10.0 * s.time;
+    worst = std::max(worst, std::abs(s.position - (1.0 - (1.0 + w) * std::exp(-w))));
+  }
+  CHECK(worst < 0.01);
+  // q(t90): 1 − (1 + ωt)e^(−ωt) = 0.9 at ωt = 3.890: t = 0.389 s.
+  REQUIRE(run.implicit_metrics.time_to_90);
+  CHECK(*run.implicit_metrics.time_to_90 == Approx(0.389).epsilon(0.01));
+  CHECK(run.implicit_metrics.overshoot < 1e-3);
+  CHECK(run.implicit_metrics.velocity_sign_changes == 0);
+  CHECK_FALSE(run.explicit_metrics.diverged);
+}
+
+TEST_CASE("simulate: the guide's 5700 N·m/rad at 250 Hz × 64: the explicit spring diverges, PhysX's row converges",
+          "[simulate][cli]") {
+  Gripper g("stiffness = 5700\ndamping = 0.277\n");
+  // On the guide's lighter link h·nf = 1/16000 × sqrt(5700 / 3.37e-6) = 2.57.
+  const auto doc = g.run({"--rate", "250", "--position-iterations", "64", "--inertia", "lighter-link"});
+  CHECK(doc["h_s"].get<double>() == Approx(1.0 / 16000));
+  CHECK(doc["inertia"].get<double>() == Approx(3.37e-6).epsilon(1e-3));
+  CHECK(doc["implicit_factor"].get<double>() == Approx(0.078).epsilon(0.01));
+  CHECK(doc["explicit"]["diverged"] == true);
+  CHECK(doc["implicit"]["diverged"] == false);
+  CHECK(doc["implicit"]["time_to_98_s"].is_number());
+  // The max velocity (2.9 rad/s) decides the motion: 0.82 rad takes ≈ 0.283 s.
+  CHECK(doc["implicit"]["velocity_clamped_s"].get<double>() > 0.2);
+}
+
+TEST_CASE("simulate: 275 N·m/rad + 5e-3 armature at 60 Hz: PGS explicit diverges (h·nf = 3.9), TGS both fine",
+          "[simulate][cli]") {
+  Gripper g("stiffness = 275\ndamping = 0.061\narmature = 5e-3\n");
+  const auto pgs = g.run({"--rate", "60", "--position-iterations", "64", "--solver", "PGS", "--duration", "2"});
+  CHECK(pgs["h_s"].get<double>() == Approx(1.0 / 60));
+  CHECK(pgs["explicit"]["diverged"] == true);
+  CHECK(pgs["implicit"]["diverged"] == false);
+  const auto tgs = g.run({"--rate", "60", "--position-iterations", "64", "--solver", "TGS", "--duration", "2"});
+  CHECK(tgs["h_s"].get<double>() == Approx(1.0 / 3840));
+  CHECK(tgs["explicit"]["diverged"] == false);
+  CHECK(tgs["implicit"]["diverged"] == false);
+  CHECK(tgs["implicit"]["time_to_98_s"].is_number());
+}
+
+TEST_CASE("simulate: a load above max force stalls the joint, and the report says so", "[simulate][cli]") {
+  Gripper g("stiffness = 275\ndamping = 0.061\n");
+  auto r = run_cli({"simulate", "gripper.urdf", "--rate", "250", "--position-iterations", "64", "--load-torque", "30"},
+                   g.dir.path());
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("The joint stalls: the load holds it") != std::string::npos);
+  CHECK(r.out.find("with the drive at its max force 24 N·m") != std::string::npos);
+  const auto doc = g.run({"--rate", "250", "--position-iterations", "64", "--load-torque", "30"});
+  CHECK(doc["implicit"]["stalled"] == true);
+  CHECK(doc["implicit"]["final_force"].get<double>() == Approx(24.0).epsilon(1e-6));
+}
+
+TEST_CASE("simulate: --csv and --plot write the series; rsvg-convert renders the SVG", "[simulate][cli]") {
+  Gripper g("stiffness = 275\ndamping = 0.061\n");
+  auto r = run_cli({"simulate", "gripper.urdf", "--rate", "250", "--position-iterations", "64", "--csv", "run.csv",
+                    "--plot", "run.svg", "--duration", "0.5"},
+                   g.dir.path());
+  REQUIRE(r.exit_code == 0);
+  const std::string csv = read_file(g.dir.path() / "run.csv");
+  CHECK(csv.starts_with("time_s,implicit_position_rad,implicit_velocity_rad_s,implicit_force,explicit_position_rad,"));
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 127);  // header + 126 frames (t = 0 … 0.5 s)
+  const std::string svg = read_file(g.dir.path() / "run.svg");
+  CHECK(svg.find("position (deg)") != std::string::npos);
+  CHECK(svg.find("drive force (N·m)") != std::string::npos);
+  CHECK(svg.find("time (s)") != std::string::npos);
+  if (std::system("command -v rsvg-convert >/dev/null 2>&1") != 0) {
+    WARN("rsvg-convert not installed (Debian librsvg2-bin, scripts/bootstrap.sh): SVG rendering not checked");
+    return;
+  }
+  const auto png = g.dir.path() / "run.png";
+  const std::string command = "rsvg-convert -w 800 -o '" + png.string() + "' '" + (g.dir.path() / "run.svg").string() + "'";
+  CHECK(std::system(command.c_str()) == 0);
+  CHECK(std::filesystem::file_size(png) > 10000);
+}
+
+TEST_CASE("simulate: bad input is one line naming it, exit 2; work is bounded", "[simulate][cli]") {
+  Gripper g("stiffness = 275\n");
+  const auto error = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), {"simulate", "gripper.urdf"});
+    auto r = run_cli(args, g.dir.path());
+    CHECK(r.exit_code == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    return r.err;
+  };
+  CHECK(error({"--duration", "0"}) == "asset-lint simulate: error: --duration must be a finite number > 0, got '0'\n");
+  CHECK(error({"--duration", "nan"}) == "asset-lint simulate: error: --duration must be a finite number > 0, got 'nan'\n");
+  CHECK(error({"--rate", "-60"}) == "asset-lint simulate: error: --rate must be a finite number > 0, got '-60'\n");
+  CHECK(error({"--from", "inf"}) == "asset-lint simulate: error: --from must be a finite number, got 'inf'\n");
+  CHECK(error({"--joint", "left_inner_finger_joint"}) ==
+        "asset-lint simulate: error: gripper.urdf: --joint names 'left_inner_finger_joint', a mimic of 'finger_joint': "
+        "name the joint it follows\n");
+  CHECK(error({"--duration", "1000", "--rate", "250", "--position-iterations", "64"}) ==
+        "asset-lint simulate: error: --duration 1000 s at 250 Hz with 64 sub-steps is 3.2e7 solver steps, above the "
+        "limit of 2e7: shorten the duration\n");
+  Gripper undriven("damping = 1\n");
+  auto r = run_cli({"simulate", "gripper.urdf"}, undriven.dir.path());
+  CHECK(r.exit_code == 2);
+  CHECK(r.err == "asset-lint simulate: error: gripper.urdf: joint 'finger_joint' has no drive stiffness: author one in "
+                 "the asset or set [drives.finger_joint] stiffness (`asset-lint tune --apply` derives it)\n");
+}
