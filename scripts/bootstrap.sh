@@ -9,6 +9,7 @@ packages=(
   liburdfdom-dev libtinyxml2-dev libeigen3-dev libfmt-dev libcli11-dev
   catch2 libtomlplusplus-dev nlohmann-json3-dev
   libmujoco-dev
+  librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot
 )
 # Fuzzing (fuzz/README.md) needs clang and libclang-rt-14-dev; the suite itself only replays
 # the fuzz regressions with the project's compiler, so they are not installed here.

@@ -88,6 +88,24 @@ TEST_CASE("articulated inertia of a two-link chain: 1/(M⁻¹)₁₁ = M₁₁ �
   CHECK(Articulation(a).inertia(a.joints[0]).value == Approx(arm.m11() - arm.m12() * arm.m12() / m22).epsilon(1e-12));
 }
 
+TEST_CASE("a coupled motion's inertia is Jᵀ·M·J, the other joints held", "[physics][articulation]") {
+  TwoLink arm;
+  Asset a = arm.asset();
+  a.joints[1].armature = Quantity::unauthored(0.05, Unit::KilogramMeter2);
+  Articulation articulation(a);
+  const double m22 = arm.m22() + 0.05;
+  // The elbow alone with the shoulder held: M₂₂ (armature included), not 1/r.
+  const auto elbow = articulation.coupled_inertia({{&a.joints[1], 1.0}});
+  REQUIRE(elbow.known);
+  CHECK(elbow.value == Approx(m22).epsilon(1e-12));
+  // The elbow following the shoulder at gearing g: M₁₁ + 2g·M₁₂ + g²·M₂₂.
+  for (double g : {1.0, -0.5, 2.0}) {
+    const auto coupled = articulation.coupled_inertia({{&a.joints[0], 1.0}, {&a.joints[1], g}});
+    REQUIRE(coupled.known);
+    CHECK(coupled.value == Approx(arm.m11() + 2 * g * arm.m12() + g * g * m22).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("links joined by a fixed joint are one rigid body", "[physics][articulation]") {
   Asset a;
   a.links = {massless("base"), link("l1a", 1.0, {0.3, 0, 0}, {0.001, 0.03, 0.02}), link("l1b", 0.5, {0.1, 0, 0}, {0.002, 0.004, 0.01})};

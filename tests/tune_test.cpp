@@ -165,6 +165,17 @@ TEST_CASE("tune: the command prints every step and the JSON summary", "[tune][cl
   const auto doc = nlohmann::json::parse(json.out);
   check_guide_summary(doc["summary"]);
   CHECK(doc["steps"][0]["inputs"][0]["origin"] == "--payload-kg");
+  // The drive row tune's numbers rest on: h = dt/N, the articulated inertia 1/r of the
+  // finger joint (the other joints free) and x at the recommended k and d.
+  const auto& s = doc["summary"];
+  CHECK(s["step_h_s"].get<double>() == Approx(1.0 / 16000).epsilon(1e-12));
+  CHECK(s["articulated_inertia_kgm2"].get<double>() == Approx(8.569e-5).epsilon(1e-3));
+  CHECK(s["implicit_factor"].get<double>() == Approx(0.9461).epsilon(1e-3));
+  CHECK(text.out.find("12. implicit factor of PhysX's drive row at that drive: x = 1 / (1 + h·(h·k + d) / I)\n"
+                      "     h = 6.25e-5 s          the step the row is built with, from TGS, h = 1/16000 s\n") !=
+        std::string::npos);
+  // On the guide's lighter link x = 0.408, PhysX's own x for k 275, d 0.061 (docs/physx-reference.md).
+  CHECK(text.out.find("On the guide's lighter link (3.37e-6 kg·m²): x = 0.408; h·nf = 0.565.") != std::string::npos);
 }
 
 TEST_CASE("tune: the USDA fixture gives the same numbers, with per-degree values to author", "[tune][cli]") {

@@ -14,6 +14,7 @@
 #include "commands/exit_status.h"
 #include "commands/fix.h"
 #include "commands/stdin.h"
+#include "commands/simulate.h"
 #include "commands/tune.h"
 #include "config/resolver.h"
 #include "engine/file_system.h"
@@ -125,6 +126,8 @@ int run(const std::vector<std::string>& args, std::istream& in, std::ostream& ou
   if (!args.empty() && args.front() == "compare")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
   if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
+  if (!args.empty() && args.front() == "simulate")
+    return commands::run_simulate({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "check")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal);
   return run_check_command(args, in, out, err, out_is_terminal);

@@ -1,14 +1,31 @@
 #include "commands/command_input.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
 
+#include "commands/exit_status.h"
 #include "config/resolver.h"
 #include "util/numbers.h"
 
 namespace assetlint::commands {
+
+std::optional<int> parse_command(CLI::App& app, const std::vector<std::string>& args, const std::string& name,
+                                 std::ostream& out, std::ostream& err) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return kExitClean;
+  } catch (const CLI::ParseError& e) {
+    err << "asset-lint " << name << ": error: " << e.what() << "\n";
+    return kExitError;
+  }
+  return std::nullopt;
+}
 
 std::optional<double> positive_flag(const std::string& flag, const std::string& text, std::string& error,
                                     bool allow_zero) {
@@ -20,7 +37,16 @@ std::optional<double> positive_flag(const std::string& flag, const std::string& 
   return value;
 }
 
-CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config) {
+void add_scope_options(CLI::App& app, CompositionScope& scope) {
+  app.add_option("--root", scope.root,
+                 "The tree whose files USD composition may read (default: the file's git work tree, else the "
+                 "directory of its asset-lint.toml)")
+      ->check(CLI::ExistingDirectory);
+  app.add_flag("--allow-outside-root", scope.allow_outside_root, "Let USD composition read layers outside that tree");
+}
+
+CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
+                                const CompositionScope& scope) {
   CommandAsset result;
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
@@ -29,6 +55,8 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
   }
   config::CommandLineOverrides overrides;
   overrides.trees.push_back(std::filesystem::current_path(ec).string());
+  overrides.root = scope.root;
+  overrides.allow_outside_root = scope.allow_outside_root;
   config::SettingsResolver resolver(overrides, config);
   if (auto problem = resolver.prepare({path})) {
     result.error = problem->to_string();
@@ -53,6 +81,24 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
     result.error = fmt::format("cannot read {}: {}", path, first);
   }
   return result;
+}
+
+physics::SimulationRate command_rate(const Asset& asset, const Settings& settings) {
+  physics::SimulationRate rate = physics::effective_simulation(asset, settings);
+  const auto& sim = settings.simulation;
+  if (sim.timesteps_per_second && sim.timesteps_per_second->origin.starts_with("--")) {
+    rate.timesteps_per_second = sim.timesteps_per_second->value;
+    rate.rate_origin = sim.timesteps_per_second->origin;
+  }
+  if (sim.position_iterations && sim.position_iterations->origin.starts_with("--")) {
+    rate.position_iterations = sim.position_iterations->value;
+    rate.iterations_origin = sim.position_iterations->origin;
+  }
+  if (sim.solver && sim.solver->origin.starts_with("--")) {
+    rate.solver = sim.solver->value == "PGS" ? physics::Solver::PGS : physics::Solver::TGS;
+    rate.solver_origin = sim.solver->origin;
+  }
+  return rate;
 }
 
 }  // namespace assetlint::commands

@@ -8,8 +8,19 @@
 
 #include "pipeline/lint.h"
 #include "engine/settings.h"
+#include "physics/step.h"
+
+namespace CLI {
+class App;
+}
 
 namespace assetlint::commands {
+
+// Parses a command's words (those after its name) with `app`. When parsing ends the
+// command, its exit status: 0 after printing the help to `out`, 2 after one error line
+// "asset-lint NAME: error: …" on `err`.
+std::optional<int> parse_command(CLI::App& app, const std::vector<std::string>& args, const std::string& name,
+                                 std::ostream& out, std::ostream& err);
 
 // A number given on the command line: finite and > 0 (or ≥ 0 with `allow_zero`). On
 // failure, nullopt and one line in `error` naming the flag and what it got.
@@ -24,6 +35,20 @@ struct CommandAsset {
   LoadedAsset loaded;
   std::optional<std::string> error;
 };
-CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config);
+// Where USD composition may read, as `check`'s --root and --allow-outside-root say.
+struct CompositionScope {
+  std::string root;  // empty: the file's git work tree, else its asset-lint.toml's directory
+  bool allow_outside_root = false;
+};
+CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
+                                const CompositionScope& scope = {});
+
+// Adds --root and --allow-outside-root to a command.
+void add_scope_options(CLI::App& app, CompositionScope& scope);
+
+// The rate, iterations and solver a command steps at: the asset's (stage, then
+// configuration, then PhysX defaults), except that values given on the command line
+// (origin "--rate", "--position-iterations", "--solver") win over the stage too.
+physics::SimulationRate command_rate(const Asset& asset, const Settings& settings);
 
 }  // namespace assetlint::commands

@@ -55,16 +55,9 @@ int run_tune(const std::vector<std::string>& args, std::ostream& out, std::ostre
   app.add_option("--output-format", format, "text or json")->check(CLI::IsMember({"text", "json"}));
   app.add_flag("--apply", apply, "Write the recommended max force, max velocity, stiffness and damping");
   app.add_flag("--diff", diff, "Print what --apply would change as a unified diff; write nothing");
-  std::vector<std::string> reversed(args.rbegin(), args.rend());
-  try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return kExitOk;
-  } catch (const CLI::ParseError& e) {
-    err << "asset-lint tune: error: " << e.what() << "\n";
-    return kExitError;
-  }
+  CompositionScope scope;
+  add_scope_options(app, scope);
+  if (auto status = parse_command(app, args, "tune", out, err)) return *status;
 
   SpecFlags flags;
   for (std::size_t i = 0; i < std::size(kSpecFlags); ++i) {
@@ -82,7 +75,7 @@ int run_tune(const std::vector<std::string>& args, std::ostream& out, std::ostre
     flags.*(kSpecFlags[i].field) = *value;
   }
 
-  CommandAsset input = load_command_asset(path, config);
+  CommandAsset input = load_command_asset(path, config, scope);
   if (input.error) {
     err << "asset-lint tune: error: " << *input.error << "\n";
     return kExitError;

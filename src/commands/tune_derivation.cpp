@@ -1,10 +1,13 @@
 #include "commands/tune_derivation.h"
+#include "commands/command_input.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "physics/articulation.h"
 #include "physics/drive.h"
+#include "physics/drive_row.h"
 #include "physics/gripper.h"
 #include "physics/inertia.h"
 #include "physics/sizing.h"
@@ -66,18 +69,7 @@ class Deriver {
     d_.joint = &joint;
     for (const Joint* member : physics::coupled_joints(asset, joint))
       if (member != &joint) d_.mimics.push_back(member);
-    rate_ = physics::effective_simulation(asset, settings);
-    // On the command line, --rate and --position-iterations win over the stage too: tune
-    // answers "what if".
-    const auto& sim = settings.simulation;
-    if (sim.timesteps_per_second && sim.timesteps_per_second->origin.starts_with("--")) {
-      rate_.timesteps_per_second = sim.timesteps_per_second->value;
-      rate_.rate_origin = sim.timesteps_per_second->origin;
-    }
-    if (sim.position_iterations && sim.position_iterations->origin.starts_with("--")) {
-      rate_.position_iterations = sim.position_iterations->value;
-      rate_.iterations_origin = sim.position_iterations->origin;
-    }
+    rate_ = command_rate(asset, settings);
     d_.simulation = rate_.describe();
   }
 
@@ -87,6 +79,7 @@ class Deriver {
     inertia_step();
     current_frequency_step();
     stiffness_steps();
+    implicit_step();
     armature_steps();
     summary();
     return std::move(d_);
@@ -171,7 +164,9 @@ class Deriver {
       total.result = TuneResult{required->required, symbol(units_.force), {}, {}};
       if (const Quantity* current = current_max_force())
         total.notes.push_back(fmt::format("The asset has {} {} ({}).", format_number(current->value, 4),
-                                          unit_symbol(units_.force), origin_of(asset_, current->span)));
+                                          unit_symbol(units_.force),
+                                          current->span.valid() ? origin_of(asset_, current->span)
+                                                                : drive_settings_origin("max_force")));
     }
   }
 
@@ -215,7 +210,8 @@ class Deriver {
   void inertia_step() {
     TuneStep& step = add("effective_inertia", "effective inertia (the guide's lighter link)",
                          "I = I_com + m·d² of the lightest link over the joint and its mimics, + armature");
-    inertia_ = physics::effective_inertia(asset_, joint_);
+    inertia_ = physics::effective_inertia(articulation_, asset_, joint_);
+    articulated_ = articulation_.inertia(joint_);
     if (!inertia_.known) {
       std::string links;
       for (const auto& name : inertia_.unknown_links) links += (links.empty() ? "'" : ", '") + name + "'";
@@ -250,6 +246,7 @@ class Deriver {
     if (joint_.armature)
       step.inputs.push_back(armature_input());
     step.result = TuneResult{inertia_.value, symbol(units_.inertia), {}, {}};
+    step.notes.push_back(articulated_note());
     step.notes.push_back(fmt::format("Lighter link: '{}' on joint '{}' ({} {}).", link.name.text, via.name.text,
                                      format_number(inertia_.link_inertia, 3), unit_symbol(units_.inertia)));
     if (!inertia_.unknown_links.empty()) {
@@ -257,6 +254,62 @@ class Deriver {
       for (const auto& name : inertia_.unknown_links) links += (links.empty() ? "'" : ", '") + name + "'";
       step.notes.push_back(fmt::format("Links without authored mass or inertia were left out: {}.", links));
     }
+  }
+
+  std::string articulated_note() const {
+    if (articulated_.known)
+      return fmt::format("The drive row sees the articulated inertia 1/r = {} {} (the other joints free): the guide's "
+                         "lighter link is a conservative stand-in for the natural-frequency check.",
+                         format_number(articulated_.value, 3), unit_symbol(units_.inertia));
+    std::string links;
+    for (const auto& name : articulated_.unknown_links) links += (links.empty() ? "'" : ", '") + name + "'";
+    return fmt::format("The articulated inertia is unknown{}.",
+                       links.empty() ? (articulated_.reason.empty() ? std::string() : ": " + articulated_.reason)
+                                     : " (unauthored mass: " + links + ")");
+  }
+
+  // x = 1/(1 + h·(h·k + d)·r) of PhysX's drive row at the recommended k and d.
+  void implicit_step() {
+    TuneStep& step = add("implicit_factor", "implicit factor of PhysX's drive row at that drive",
+                         "x = 1 / (1 + h·(h·k + d) / I)");
+    step.inputs.push_back(TuneInput{"h", "the step the row is built with", rate_.h(), "s", rate_.step_text(), {}});
+    bool ok = from_step(step, "stiffness", "k", "stiffness");
+    ok = from_step(step, "damping", "d", "damping") && ok;
+    const bool articulated = articulated_.known;
+    if (articulated)
+      step.inputs.push_back(TuneInput{"I", "articulated inertia 1/r", articulated_.value, symbol(units_.inertia),
+                                      "the articulation (1/(M⁻¹)ᵢᵢ)", {}});
+    else if (auto i = index_of("effective_inertia")) step.inputs.push_back(inertia_input(*i));
+    else ok = from_step(step, "effective_inertia", "I", "effective inertia") && ok;
+    if (!ok) return;
+    const double k = *value_of("stiffness"), d = *value_of("damping");
+    const DriveType type = joint_.drive ? joint_.drive->type : DriveType::Force;
+    const auto row = physics::drive_row(rate_, k, d, type, articulated ? articulated_.value : inertia_.value);
+    step.result = TuneResult{row.x(), "", {}, {}};
+    const auto guide_row = physics::drive_row(rate_, k, d, type, inertia_.value);
+    step.notes.push_back(fmt::format("On the guide's lighter link ({} {}): x = {}; h·nf = {}.",
+                                     format_number(inertia_.value, 3), unit_symbol(units_.inertia),
+                                     format_number(guide_row.x(), 3),
+                                     format_number(rate_.h() * physics::natural_frequency(k, inertia_.value), 3)));
+    if (auto delta = target_delta_value()) {
+      physics::ForceLimit limit;
+      if (auto force = value_of("max_drive_force")) limit.max_force = *force;
+      const auto hold = physics::static_hold(row, *delta, limit);
+      step.notes.push_back(fmt::format(
+          "Held {} before the target by a contact, the drive pushes {} {} of k·Δ = {} {} ({}{}).",
+          "Δ", format_number(hold.force, 3), unit_symbol(units_.force), format_number(hold.spring, 3),
+          unit_symbol(units_.force), physics::solver_name(rate_.solver),
+          hold.capped ? ", capped at max force" : ""));
+    }
+    if (!articulated) step.notes.push_back(articulated_note());
+  }
+
+  std::optional<double> target_delta_value() const {
+    for (const TuneStep& s : d_.steps)
+      if (s.name == "stiffness")
+        for (const TuneInput& in : s.inputs)
+          if (in.symbol == "Δ") return in.value;
+    return std::nullopt;
   }
 
   TuneInput armature_input() const {
@@ -420,6 +473,10 @@ class Deriver {
     s.emplace_back("damping_nms_per_rad", value_of("damping"));
     s.emplace_back("sim_rate_hz", rate_.timesteps_per_second);
     s.emplace_back("position_iterations", rate_.position_iterations);
+    s.emplace_back("step_h_s", rate_.h());
+    s.emplace_back("articulated_inertia_kgm2",
+                   articulated_.known ? std::optional<double>(articulated_.value) : std::nullopt);
+    s.emplace_back("implicit_factor", value_of("implicit_factor"));
     if (index_of("armature_natural_frequency") || joint_.armature) {
       s.emplace_back("armature_natural_frequency_rad_s", value_of("armature_natural_frequency"));
       s.emplace_back("rotor_inertia_kgm2", value_of("rotor_inertia"));
@@ -437,6 +494,8 @@ class Deriver {
   GainUnits units_;
   physics::SimulationRate rate_;
   physics::EffectiveInertia inertia_;
+  physics::Articulation articulation_{asset_};
+  physics::ArticulatedInertia articulated_;
   TuneDerivation d_;
 };
 

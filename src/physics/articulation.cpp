@@ -351,6 +351,38 @@ ArticulatedInertia Articulation::inertia(const Joint& joint) const {
   return none;
 }
 
+ArticulatedInertia Articulation::coupled_inertia(const std::vector<std::pair<const Joint*, double>>& rates) const {
+  std::unordered_map<const Joint*, double> rate_of;
+  for (const auto& [joint, rate] : rates) {
+    ArticulatedInertia own = inertia(*joint);
+    if (!own.known) return own;
+    rate_of[joint] = rate;
+  }
+  std::vector<Vector6> velocity(bodies_.size(), Vector6::Zero());
+  double energy = 0;  // twice the kinetic energy: Σ vᵀ·I·v over the bodies + Σ armature·rate²
+  for (const TreeJoint& j : tree_) {
+    auto it = rate_of.find(j.joint);
+    const double rate = it == rate_of.end() ? 0.0 : it->second;
+    velocity[static_cast<std::size_t>(j.child)] =
+        motion_transform(j.child_in_parent) * velocity[static_cast<std::size_t>(j.parent)] + j.motion * rate;
+    energy += j.armature * rate * rate;
+  }
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Body& body = bodies_[b];
+    if (body.world || !body.mass_known) continue;
+    energy += velocity[b].dot(spatial_inertia(body.mass, body.com, body.inertia) * velocity[b]);
+  }
+  ArticulatedInertia result;
+  if (!(energy > 0)) {
+    result.reason = "the coupled joints move no mass";
+    return result;
+  }
+  result.known = true;
+  result.value = energy;
+  result.response = 1.0 / energy;
+  return result;
+}
+
 std::optional<double> Articulation::inertia_about_axis(const Body& body, const Joint& joint, int which) const {
   if (!body.mass_known || body.world) return std::nullopt;
   if (joint.type == JointType::Prismatic) return body.mass;

@@ -69,6 +69,12 @@ class Articulation {
   // r is then a 6-vector product. No joint-space matrix is formed.
   ArticulatedInertia inertia(const Joint& joint) const;
 
+  // Jᵀ·M·J: the inertia of the motion in which each listed joint moves at its rate (per unit
+  // of a driver) and every other joint, a floating root included, stays still; armatures
+  // count with rate². Unknown when any listed joint's `inertia` is. O(n) from the body
+  // velocities (twice the kinetic energy at those rates); no mass matrix is formed.
+  ArticulatedInertia coupled_inertia(const std::vector<std::pair<const Joint*, double>>& rates) const;
+
   // A body's moment of inertia about a joint's axis line (parallel-axis shifted; mass for
   // prismatic joints), when its mass properties are known.
   std::optional<double> inertia_about_axis(const Body& body, const Joint& joint, int which) const;

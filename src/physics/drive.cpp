@@ -36,6 +36,15 @@ double gearing_to_driver(const Joint& member, const Joint& driver) {
 }
 }  // namespace
 
+ArticulatedInertia mechanism_inertia(const Articulation& articulation, const Asset& asset, const Joint& joint) {
+  const std::vector<const Joint*> set = coupled_joints(asset, joint);
+  const double own = gearing_to_driver(joint, *set.front());
+  std::vector<std::pair<const Joint*, double>> rates;
+  for (const Joint* member : set)
+    rates.emplace_back(member, own != 0 ? gearing_to_driver(*member, *set.front()) / own : 0.0);
+  return articulation.coupled_inertia(rates);
+}
+
 EffectiveInertia effective_inertia(const Articulation& articulation, const Asset& asset, const Joint& joint) {
   EffectiveInertia best;
   const std::vector<const Joint*> set = coupled_joints(asset, joint);

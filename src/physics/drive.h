@@ -36,6 +36,12 @@ struct EffectiveInertia {
   std::string describe() const;  // "3.37e-6 kg·m² (link 'left_inner_finger' about 'left_inner_finger_joint')"
 };
 EffectiveInertia effective_inertia(const Articulation& articulation, const Asset& asset, const Joint& joint);
+
+// The inertia of a mimic-coupled mechanism along its one free direction (docs/physics.md
+// "Mimic-coupled joints"): Jᵀ·M·J with J the gearings to `joint` (1 for itself, a mimic's
+// multiplier), the mimic constraints taken as rigid and every other joint held still.
+// For a joint without mimics this is its inertia with the rest of the tree held, not 1/r.
+ArticulatedInertia mechanism_inertia(const Articulation& articulation, const Asset& asset, const Joint& joint);
 EffectiveInertia effective_inertia(const Asset& asset, const Joint& joint);
 
 

@@ -74,12 +74,14 @@ double clamp_velocity(double velocity, double position, double stop_side, const 
 
 double stop_side(const FrameLimits& limits, double position) {
   if (!limits.stop) return 0;
+  if (limits.stop_direction != 0) return limits.stop_direction;
   return *limits.stop >= position ? 1.0 : -1.0;
 }
 
 }  // namespace
 
-FrameResult step_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target) {
+FrameResult step_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target,
+                       double load) {
   const double side = stop_side(limits, state.position);
   const double bias = row.bias_coefficient();
   const double velocity_multiplier = row.velocity_multiplier();
@@ -100,6 +102,9 @@ FrameResult step_frame(const DriveRow& row, const FrameLimits& limits, JointStat
     state.velocity += (clamped - accumulated) * row.response;
     accumulated = clamped;
   };
+  // External forces enter as one velocity change per frame, before the solver runs (PhysX
+  // integrates them into the unconstrained velocity over the whole dt, TGS and PGS alike).
+  state.velocity += load * row.dt * row.response;
   if (row.solver == Solver::TGS) {
     for (int s = 0; s < row.substeps; ++s) {
       solve(s * row.h);
@@ -119,7 +124,8 @@ FrameResult step_frame(const DriveRow& row, const FrameLimits& limits, JointStat
   return result;
 }
 
-FrameResult explicit_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target) {
+FrameResult explicit_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target,
+                           double load) {
   const double side = stop_side(limits, state.position);
   const double max_force = limits.force.max_average_force(row.dt);
   FrameResult result;
@@ -127,13 +133,19 @@ FrameResult explicit_frame(const DriveRow& row, const FrameLimits& limits, Joint
     double force = row.stiffness * (target.position - state.position) + row.damping * (target.velocity - state.velocity);
     if (row.type == DriveType::Acceleration) force /= row.response;  // k and d act as if I = 1
     force = std::clamp(force, -max_force, max_force);
-    state.velocity += row.h * force * row.response;
+    state.velocity += row.h * (force + load) * row.response;
     state.velocity = clamp_velocity(state.velocity, state.position, side, limits, row.h);
     state.position += state.velocity * row.h;
     result.impulse += force * row.h;
   }
   result.state = state;
   return result;
+}
+
+bool explicit_stable(const DriveRow& row) {
+  const double r = row.type == DriveType::Acceleration ? 1.0 : row.response;
+  const double spring = row.h * row.h * row.stiffness * r, damper = row.h * row.damping * r;
+  return damper < 2 && spring + 2 * damper < 4;
 }
 
 }  // namespace assetlint::physics

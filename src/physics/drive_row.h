@@ -75,6 +75,9 @@ struct FrameLimits {
   // A hard stop: the joint cannot move past this position, on the side of it where it
   // starts (a rigid contact: any velocity into the stop is removed).
   std::optional<double> stop;
+  // Which motion the stop bounds: +1 upward, −1 downward, 0 the side the joint starts on
+  // each frame (a joint resting exactly on it then counts as below it).
+  int stop_direction = 0;
 };
 struct FrameResult {
   JointState state;     // at the end of the frame
@@ -87,11 +90,20 @@ struct FrameResult {
 // clamped; PGS: the row built at h = dt, M solves with the accumulated impulse scaled by
 // 1 − x each, then one position update. The row is built from the error at the frame's
 // start, as PhysX builds it once per frame.
-FrameResult step_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target);
+// `load`: a constant external torque (force) on the joint, integrated into the velocity
+// once per frame before the solves, as PhysX integrates external forces (a payload, gravity).
+FrameResult step_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target,
+                       double load = 0);
 
 // The textbook explicit spring at the same h, for comparison: N (TGS) or 1 (PGS) steps of
 // semi-implicit Euler, F = k·(target − q) + d·(v_target − v) with the force clamped to
 // maxForce, v += h·F/I, q += h·v. It diverges once h·nf > 2 where the row stays stable.
-FrameResult explicit_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target);
+FrameResult explicit_frame(const DriveRow& row, const FrameLimits& limits, JointState state, DriveTarget target,
+                           double load = 0);
+
+// Whether that explicit spring is stable at the row's h, clamps aside: semi-implicit Euler on
+// I·q̈ = −k·q − d·q̇ is stable when h·d/I < 2 and h²·k/I + 2·h·d/I < 4 (undamped: h·nf < 2);
+// I = 1 for acceleration drives. Outside it only the force and velocity clamps bound it.
+bool explicit_stable(const DriveRow& row);
 
 }  // namespace assetlint::physics

@@ -44,3 +44,18 @@ const drives = [
 
 export const cases = drives.flatMap((drive) =>
   ['TGS', 'PGS'].map((solver) => ({ ...defaults, ...drive, solver })));
+
+// Free motion against a constant load torque about the axis (`loadTorque`, N·m, applied each
+// frame; negative opposes the drive), with and without a max joint velocity: what
+// `asset-lint simulate --load-torque` steps. 8 frames each, under both solvers.
+const loaded = [
+  { name: 'k275 d2 I0.01 N4 maxForce5 load-3', stiffness: 275, damping: 2, inertia: 0.01, positionIterations: 4,
+    maxForce: 5, loadTorque: -3 },
+  { name: 'k275 d2 I0.01 N4 maxForce5 load-8', stiffness: 275, damping: 2, inertia: 0.01, positionIterations: 4,
+    maxForce: 5, loadTorque: -8 },
+  { name: 'k275 d0.061 I8.57e-5 maxForce24 maxVelocity2.9 load-30', stiffness: 275, damping: 0.061, inertia: 8.57e-5,
+    maxForce: 24, maxJointVelocity: 2.9, targetDelta: 0.82, loadTorque: -30 },
+];
+
+export const loadedCases = loaded.flatMap((drive) =>
+  ['TGS', 'PGS'].map((solver) => ({ ...defaults, ...drive, solver })));

@@ -116,7 +116,7 @@ export function simulate(world, c, { frames, withBlock, withLimit = false }) {
     joint.setMotion(twist, PhysX.PxArticulationMotionEnum.eFREE);
   }
   joint.setFrictionCoefficient(0);
-  joint.setMaxJointVelocity(FAR);
+  joint.setMaxJointVelocity(c.maxJointVelocity ?? FAR);
   joint.setArmature(twist, c.armature);
   joint.setDriveParams(twist, new PhysX.PxArticulationDrive(c.stiffness, c.damping, c.maxForce,
     PhysX.PxArticulationDriveTypeEnum.eFORCE));
@@ -143,6 +143,8 @@ export function simulate(world, c, { frames, withBlock, withLimit = false }) {
   const out = [];
   for (let frame = 1; frame <= frames; ++frame) {
     events.length = 0;
+    // A constant load torque about the joint axis (+x), applied anew each frame (PhysX clears it).
+    if (c.loadTorque) link.addTorque(world.vec(c.loadTorque, 0, 0));
     scene.simulate(dt);
     scene.fetchResults(true);
     // Torque about the joint axis (+x through the origin) of the impulses the block put on

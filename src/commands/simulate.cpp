@@ -43,7 +43,7 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   CLI::App app{"asset-lint simulate: steps the driven joint as PhysX's articulation drive does, beside the explicit "
                "spring at the same step",
                "asset-lint simulate"};
-  std::string path, format = "text", solver, inertia_choice = "articulation";
+  std::string path, format = "text", solver, inertia_choice;
   std::optional<std::string> joint_name, config, from_text, to_text, load_text, duration_text = std::string("1"), plot,
       csv, rate_text, iterations_text;
   bool from_open = false, to_closed = false;
@@ -64,21 +64,15 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   app.add_option("--solver", solver, "TGS or PGS (wins over the stage and [simulation])")
       ->check(CLI::IsMember({"TGS", "PGS"}));
   app.add_option("--inertia", inertia_choice,
-                 "The inertia to step: articulation (what PhysX's row sees, the default) or lighter-link (the guide's "
-                 "estimate)")
-      ->check(CLI::IsMember({"articulation", "lighter-link"}));
+                 "The inertia to step: mechanism (Jᵀ·M·J over the joint and its mimics; the default when it has "
+                 "mimics), articulation (1/r, what PhysX's row sees for the joint alone; the default otherwise) or "
+                 "lighter-link (the guide's estimate)")
+      ->check(CLI::IsMember({"mechanism", "articulation", "lighter-link"}));
   app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the asset)");
   app.add_option("--output-format", format, "text or json")->check(CLI::IsMember({"text", "json"}));
-  std::vector<std::string> reversed(args.rbegin(), args.rend());
-  try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return kExitClean;
-  } catch (const CLI::ParseError& e) {
-    err << "asset-lint simulate: error: " << e.what() << "\n";
-    return kExitError;
-  }
+  CompositionScope scope;
+  add_scope_options(app, scope);
+  if (auto status = parse_command(app, args, "simulate", out, err)) return *status;
   const auto fail = [&](const std::string& message) {
     err << "asset-lint simulate: error: " << message << "\n";
     return kExitError;
@@ -100,7 +94,7 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   if (from_text && !(from_value = finite_flag("--from", *from_text, error))) return fail(error);
   if (to_text && !(to_value = finite_flag("--to", *to_text, error))) return fail(error);
 
-  CommandAsset input = load_command_asset(path, config);
+  CommandAsset input = load_command_asset(path, config, scope);
   if (input.error) return fail(*input.error);
   Settings settings = with_spec_flags(input.settings, flags);
   if (!solver.empty()) settings.simulation.solver = Configured<std::string>{solver, "--solver"};
@@ -139,22 +133,41 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   const physics::Articulation articulation(asset);
   const physics::ArticulatedInertia articulated = articulation.inertia(*joint);
   const physics::EffectiveInertia lighter = physics::effective_inertia(articulation, asset, *joint);
+  const std::size_t mimics = physics::coupled_joints(asset, *joint).size() - 1;
+  const bool chosen = !inertia_choice.empty();
+  if (!chosen) inertia_choice = mimics > 0 ? "mechanism" : "articulation";
+  const auto unknown = [&](const physics::ArticulatedInertia& i) {
+    std::string links;
+    for (const auto& name : i.unknown_links) links += (links.empty() ? "'" : ", '") + name + "'";
+    return links.empty() ? i.reason : "unauthored mass: " + links;
+  };
   double inertia = 0;
-  if (inertia_choice == "lighter-link") {
+  const physics::ArticulatedInertia mechanism = physics::mechanism_inertia(articulation, asset, *joint);
+  const physics::ArticulatedInertia& wanted = inertia_choice == "mechanism" ? mechanism : articulated;
+  if (!chosen && !wanted.known && lighter.known) {
+    // By default, an unknown articulation falls back to the guide's estimate, and says so.
+    inertia = lighter.value;
+    context.inertia_origin = fmt::format("the guide's lighter link: the {} inertia is unknown ({})", inertia_choice,
+                                         unknown(wanted));
+  } else if (inertia_choice == "lighter-link") {
     if (!lighter.known)
       return fail(fmt::format("{}: --inertia lighter-link: no link of joint '{}' or its mimics authors mass and inertia",
                               path, joint->name.text));
     inertia = lighter.value;
     context.inertia_origin = "the guide's lighter link (--inertia lighter-link)";
-  } else if (articulated.known) {
+  } else if (inertia_choice == "mechanism") {
+    if (!mechanism.known)
+      return fail(fmt::format("{}: the mechanism inertia of joint '{}' is unknown ({}): pass --inertia lighter-link",
+                              path, joint->name.text, unknown(mechanism)));
+    inertia = mechanism.value;
+    context.inertia_origin = fmt::format("mechanism: Jᵀ·M·J over '{}' and its {} mimic{}, the mimics rigid",
+                                         joint->name.text, mimics, mimics == 1 ? "" : "s");
+  } else {
+    if (!articulated.known)
+      return fail(fmt::format("{}: the articulated inertia of joint '{}' is unknown ({}): pass --inertia lighter-link",
+                              path, joint->name.text, unknown(articulated)));
     inertia = articulated.value;
     context.inertia_origin = "articulation: 1/(M⁻¹)ᵢᵢ with the other joints free";
-  } else if (lighter.known) {
-    inertia = lighter.value;
-    context.inertia_origin = "the guide's lighter link (the articulated inertia is unknown)";
-  } else {
-    return fail(fmt::format("{}: no inertia is known for joint '{}': its links author no mass and inertia", path,
-                            joint->name.text));
   }
   context.inertia = inertia;
 
@@ -168,6 +181,14 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   setup.target = *target;
   // The load pushes against the motion toward the target.
   setup.load = load ? (*target >= *start ? -*load : *load) : 0.0;
+  // A load that wins pushes the joint back into its range limit behind the start: a hard stop.
+  const bool closing = *target >= *start;
+  const OptQuantity& behind = closing ? joint->lower : joint->upper;
+  if (setup.load != 0 && behind && std::isfinite(behind->value) &&
+      (closing ? behind->value <= *start : behind->value >= *start)) {
+    setup.limits.stop = behind->value;
+    setup.limits.stop_direction = closing ? -1 : 1;
+  }
   const double frames = std::ceil(*duration / rate.dt() - 1e-9);
   const double work = frames * setup.row.substeps * 2;
   if (work > kMaxSolverSteps)
@@ -191,8 +212,11 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
                       ? fmt::format("{} {}/s", format_number(setup.limits.max_velocity, 4), angular ? "rad" : "m")
                       : std::string("unbounded")),
       fmt::format("Step: {}", rate.describe()),
-      fmt::format("Inertia: {} {} ({}); the guide's lighter link: {}", format_number(inertia, 3), inertia_unit,
-                  context.inertia_origin, lighter.known ? lighter.describe() : std::string("unknown")),
+      fmt::format("Inertia: {} {} ({}); 1/r of the joint alone: {}; the guide's lighter link: {}",
+                  format_number(inertia, 3), inertia_unit, context.inertia_origin,
+                  articulated.known ? fmt::format("{} {}", format_number(articulated.value, 3), inertia_unit)
+                                    : "unknown (" + unknown(articulated) + ")",
+                  lighter.known ? lighter.describe() : std::string("unknown")),
       fmt::format("Row: x = 1/(1 + h·(h·k + d)/I) = {}; h·nf = {} s × {} rad/s = {}", format_number(setup.row.x(), 3),
                   format_number(setup.row.h, 3), format_number(nf, 4), format_number(setup.row.h * nf, 3)),
   };

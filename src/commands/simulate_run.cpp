@@ -29,6 +29,7 @@ SimulationRun run_simulation(const SimulationSetup& setup) {
   }
   const Limits limits{setup.limits.force.max_average_force(dt), setup.limits.max_velocity};
   run.implicit_metrics = measure(run.implicit, setup.from, setup.target, dt, limits);
+  run.explicit_stable = physics::explicit_stable(setup.row);
   run.explicit_metrics = measure(run.explicit_spring, setup.from, setup.target, dt, limits);
   return run;
 }

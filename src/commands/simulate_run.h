@@ -25,6 +25,7 @@ struct SimulationRun {
   std::vector<Sample> explicit_spring;  // stops at divergence
   Metrics implicit_metrics;
   Metrics explicit_metrics;
+  bool explicit_stable = true;  // physics::explicit_stable: false when only the clamps bound it
 };
 
 // Solver steps (frames × sub-steps) a run may take: `simulate` refuses longer requests.

@@ -60,9 +60,19 @@ std::string verdict(const SimulationContext& c, const SimulationSetup& s, const 
                         format_number(shown(c, m.steady_state_error), 3), position_unit(c),
                         format_number(s.limits.force.max_force, 4), c.force_unit);
   else if (m.diverged) text += "PhysX's implicit drive diverges here.\n";
+  else if (std::abs(s.load) > s.limits.force.max_average_force(s.row.dt) && m.velocity_clamped_time > 0 && m.time_to_90)
+    text += fmt::format("The load ({} {}) exceeds the max force, yet the joint moves on: the max joint velocity clamp "
+                        "after each {} solve removes the velocity the load adds (PhysX 5.6.1 does the same).\n",
+                        format_number(std::abs(s.load), 4), c.force_unit, physics::solver_name(s.row.solver));
+  const double r = s.row.type == DriveType::Acceleration ? 1.0 : s.row.response;
+  const std::string criterion = fmt::format("h²·k/I + 2·h·d/I = {} and h·d/I = {} (stable only below 4 and 2)",
+                                            format_number(s.row.h * s.row.h * s.row.stiffness * r + 2 * s.row.h * s.row.damping * r, 3),
+                                            format_number(s.row.h * s.row.damping * r, 3));
   if (run.explicit_metrics.diverged && !m.diverged)
-    text += "The explicit spring diverges at this step where PhysX's implicit row stays stable: h·nf is beyond what "
-            "an explicit step resolves.\n";
+    text += "The explicit spring diverges at this step where PhysX's implicit row stays stable: " + criterion + ".\n";
+  else if (!run.explicit_stable)
+    text += "The explicit spring is unstable at this step, " + criterion +
+            "; only the max force and max velocity clamps keep it bounded. PhysX's implicit row is stable at any step.\n";
   if (c.spec_close_time) {
     text += fmt::format("Close time: {} to 98 % against the spec's {} s ({}).\n", seconds(m.time_to_98),
                         format_number(*c.spec_close_time, 3), c.spec_origin);
@@ -112,6 +122,7 @@ void write_simulation_json(std::ostream& out, const SimulationContext& c, const 
       {"load", s.load},
       {"implicit", metrics_json(run.implicit_metrics)},
       {"explicit", metrics_json(run.explicit_metrics)},
+      {"explicit_stable", run.explicit_stable},
       {"spec_close_time_s", c.spec_close_time ? nlohmann::json(*c.spec_close_time) : nlohmann::json(nullptr)},
       {"setup", c.setup},
   };
@@ -184,6 +195,11 @@ std::string simulation_svg(const SimulationContext& c, const SimulationSetup& s,
           force.bands.push_back({run.implicit[i - 1].time, run.implicit[i].time, "#862e9c"});
       }
     force.band_label = "implicit drive at max force";
+  } else {
+    // No force limit: keep a diverging explicit spring from setting the scale; the spring
+    // force over the whole step bounds what a sane drive shows.
+    const double bound = std::max(2 * run.implicit_metrics.peak_force, s.row.stiffness * std::abs(s.target - s.from));
+    if (bound > 0) force.clip = std::pair{-bound, bound};
   }
   if (std::isfinite(s.limits.max_velocity)) {
     for (std::size_t i = 1; i < run.implicit.size(); ++i)
