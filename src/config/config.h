@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "config/file_selection.h"
 #include "engine/settings.h"
 
 namespace assetlint::config {
@@ -21,7 +22,13 @@ struct ConfigError {
 // Reads a configuration file into `settings` (on top of what it holds).
 // Unknown keys and bad values are errors; nothing is applied when there is one.
 // Origins in messages name the file as `display_path` (default: `path`).
-std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path = "");
+// `files`, when given, receives the file-selection keys (exclude, extend-exclude, respect-gitignore).
+std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path = "",
+                                FileSelectionConfig* files = nullptr);
+
+// Adds `more` to a select or ignore list. Extending an empty select list (every rule)
+// keeps every rule: it becomes `*` plus `more`.
+void extend(std::vector<std::string>& list, const std::vector<std::string>& more, bool is_select);
 
 // The same for configuration text already in memory; `path` names it in errors.
 std::optional<ConfigError> load_text(std::string_view text, const std::string& path, Settings& settings,
