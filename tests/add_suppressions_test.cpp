@@ -102,3 +102,34 @@ TEST_CASE("add-suppressions: does not combine with --fix", "[add-suppressions]")
         "asset-lint: error: --add-suppressions edits files itself; it does not combine with --fix, --diff or "
         "standard input\n");
 }
+
+TEST_CASE("add-suppressions: MJCF default classes are told apart by their class, in one run", "[add-suppressions]") {
+  TempDir dir;
+  const std::string mjcf =
+      "<mujoco model=\"two_classes\">\n  <option timestep=\"0.0166667\"/>\n  <default>\n"
+      "    <default class=\"a\">\n      <joint axis=\"1 0 0\" range=\"0 47\" armature=\"0.005\"/>\n    </default>\n"
+      "    <default class=\"b\">\n      <joint axis=\"1 0 0\" range=\"0 47\" armature=\"0.004\"/>\n    </default>\n"
+      "  </default>\n  <worldbody>\n    <body name=\"base\">\n"
+      "      <inertial pos=\"0 0 0.03\" mass=\"0.636\" diaginertia=\"0.00095 0.00094 0.00043\"/>\n"
+      "      <body name=\"f1\" pos=\"0 -0.03 0.05\">\n"
+      "        <inertial pos=\"0 0 0.01\" mass=\"0.0127\" diaginertia=\"2.1e-6 2.1e-6 1.3e-6\"/>\n"
+      "        <joint name=\"j1\" class=\"a\"/>\n      </body>\n"
+      "      <body name=\"f2\" pos=\"0 0.03 0.05\">\n"
+      "        <inertial pos=\"0 0 0.01\" mass=\"0.0127\" diaginertia=\"2.1e-6 2.1e-6 1.3e-6\"/>\n"
+      "        <joint name=\"j2\" class=\"b\"/>\n      </body>\n    </body>\n  </worldbody>\n</mujoco>\n";
+  write_file(dir.path() / "two.xml", mjcf);
+  auto baseline = run_cli({"--select", "armature-excessive", "--write-baseline", "b.json", "two.xml"}, dir.path());
+  CHECK(baseline.err == "asset-lint: wrote 2 findings (2 entries) to baseline 'b.json'\n");
+  const std::string keys = read_file(dir.path() / "b.json");
+  CHECK(keys.find("\"element\": \"default 'a'\",\n      \"attribute\": \"joint.armature\"") != std::string::npos);
+  CHECK(keys.find("\"element\": \"default 'b'\",\n      \"attribute\": \"joint.armature\"") != std::string::npos);
+  const std::string after = add_twice(dir.path(), "two.xml", "armature-excessive",
+                                      "asset-lint: added 2 suppression comments to two.xml\n");
+  std::string expected = replace_once(mjcf, "      <joint axis=\"1 0 0\" range=\"0 47\" armature=\"0.005\"/>",
+                                      "      <!-- asset-lint: ignore[armature-excessive] -->\n"
+                                      "      <joint axis=\"1 0 0\" range=\"0 47\" armature=\"0.005\"/>");
+  expected = replace_once(expected, "      <joint axis=\"1 0 0\" range=\"0 47\" armature=\"0.004\"/>",
+                          "      <!-- asset-lint: ignore[armature-excessive] -->\n"
+                          "      <joint axis=\"1 0 0\" range=\"0 47\" armature=\"0.004\"/>");
+  CHECK(after == expected);
+}

@@ -73,7 +73,8 @@ TEST_CASE("baseline: --write-baseline records rule, path, element and attribute"
   CHECK(clean.err == "asset-lint: 4 findings recorded in baseline 'asset-lint-baseline.json' not reported\n");
 }
 
-TEST_CASE("baseline: unrelated edits keep the keys; new findings are reported, stale entries named", "[baseline]") {
+TEST_CASE("baseline: unrelated edits keep the keys (URDF and USDA); new findings are reported, stale entries named",
+          "[baseline]") {
   TempDir dir;
   copy_assets(dir.path());
   write_file(dir.path() / "asset-lint-baseline.json", kBaseline);
@@ -86,6 +87,14 @@ TEST_CASE("baseline: unrelated edits keep the keys; new findings are reported, s
                   "    <child link=\"thumb\"/>\n    <limit lower=\"1\" upper=\"0\" effort=\"1\" velocity=\"1\"/>\n"
                   "  </joint>\n</robot>");
   write_file(dir.path() / "gripper.urdf", urdf);
+  // A new prim above the recorded ones, and a recorded attribute moved up its prim.
+  std::string usda = read_file(dir.path() / "joints.usda");
+  usda = replace_once(usda, "    def PhysicsRevoluteJoint \"driven\"", "    def Xform \"extra\"\n    {\n    }\n\n"
+                                                                      "    def PhysicsRevoluteJoint \"driven\"");
+  usda = replace_once(usda, "        float physxJoint:maxJointVelocity = 166.16\n", "");
+  usda = replace_once(usda, "        float physics:lowerLimit = 0\n",
+                      "        float physxJoint:maxJointVelocity = 166.16\n        float physics:lowerLimit = 0\n");
+  write_file(dir.path() / "joints.usda", usda);
   auto r = run_cli({"--select", kSelect, "--output-format", "concise", "--baseline", "asset-lint-baseline.json"},
                    dir.path());
   CHECK(r.exit_code == 1);

@@ -27,6 +27,7 @@ std::function<void(FileReport&)> suppression_inserter() {
       Diagnostic* owner = nullptr;
     };
     std::map<FileId, std::unique_ptr<SourceLocator>> locators;
+    std::set<std::tuple<std::string, std::string, std::string, std::string>> this_round;
     std::map<std::tuple<FileId, std::size_t, bool>, Insertion> insertions;
     for (auto& d : report.diagnostics) {
       if (d.rule == rules::kUnusedSuppression.id) continue;
@@ -35,8 +36,9 @@ std::function<void(FileReport&)> suppression_inserter() {
       auto& locator = locators[file];
       if (!locator) locator = std::make_unique<SourceLocator>(report.source(file));
       ElementKey key = locator->key_at(d.span.offset);
-      if (!tried->emplace(report.source(file).path(), d.rule, std::move(key.element), std::move(key.attribute)).second)
-        continue;
+      auto finding = std::make_tuple(report.source(file).path(), d.rule, std::move(key.element), std::move(key.attribute));
+      if (tried->contains(finding)) continue;  // tried in an earlier round (findings of this one may share a key)
+      this_round.insert(std::move(finding));
       const std::optional<SuppressionSite> site = locator->site_at(d.span.offset);
       if (!site) continue;
       Insertion& insertion = insertions[{file, site->offset, site->file_level}];
@@ -44,6 +46,7 @@ std::function<void(FileReport&)> suppression_inserter() {
       if (std::find(insertion.rules.begin(), insertion.rules.end(), d.rule) == insertion.rules.end())
         insertion.rules.push_back(d.rule);
     }
+    tried->insert(this_round.begin(), this_round.end());
     // One fix holds every comment, so that they are written in one round: the fixer
     // applies the rules' own fixes in stages, and the comments must not wait for them.
     if (insertions.empty()) return;

@@ -62,7 +62,8 @@ void xml_units(std::string_view text, std::vector<Unit>& units) {
     const bool self_closing = tag.end >= 2 && text[tag.end - 2] == '/';
     Unit element{tag.offset, self_closing ? tag.end : text.size(), "", std::string(tag.name), true};
     const xml::XmlAttributeSpan* name = tag.attribute("name");
-    if (!name) name = tag.attribute("reference");  // <gazebo reference="link">
+    if (!name) name = tag.attribute("reference");                           // <gazebo reference="link">
+    if (!name && tag.name == "default") name = tag.attribute("class");     // MJCF <default class="x">
     if (name) {
       element.element = fmt::format("{} '{}'", tag.name, text.substr(name->value_offset, name->value_length));
       element.attribute.clear();
