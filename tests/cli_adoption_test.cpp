@@ -128,3 +128,28 @@ TEST_CASE("adoption: standard input is linted as the file --stdin-filename names
   CHECK(usage.exit_code == 2);
   CHECK(usage.err == "asset-lint: error: '-' (standard input) must be the only path, with --stdin-filename PATH\n");
 }
+
+TEST_CASE("adoption: fixes that undo each other are named with the value they fight over", "[adoption][fix]") {
+  TempDir dir;
+  // A continuous leader at 166 rad/s: mimic-max-velocity raises the follower to 166, and
+  // units-velocity-implausible reads 166 as deg/s on a joint over 0..0.8757 rad.
+  const std::string urdf =
+      "<robot name=\"r\">\n  <link name=\"a\"/>\n"
+      "  <link name=\"b\"><inertial><mass value=\"0.1\"/><inertia ixx=\"1e-4\" ixy=\"0\" ixz=\"0\" iyy=\"1e-4\" iyz=\"0\" "
+      "izz=\"1e-4\"/></inertial></link>\n"
+      "  <link name=\"c\"><inertial><mass value=\"0.1\"/><inertia ixx=\"1e-4\" ixy=\"0\" ixz=\"0\" iyy=\"1e-4\" iyz=\"0\" "
+      "izz=\"1e-4\"/></inertial></link>\n"
+      "  <joint name=\"leader\" type=\"continuous\">\n    <parent link=\"a\"/>\n    <child link=\"b\"/>\n"
+      "    <axis xyz=\"0 0 1\"/>\n    <limit effort=\"10\" velocity=\"166\"/>\n  </joint>\n"
+      "  <joint name=\"follower\" type=\"revolute\">\n    <parent link=\"b\"/>\n    <child link=\"c\"/>\n"
+      "    <axis xyz=\"0 0 1\"/>\n    <limit lower=\"0\" upper=\"0.8757\" effort=\"10\" velocity=\"2\"/>\n"
+      "    <mimic joint=\"leader\" multiplier=\"1\"/>\n  </joint>\n</robot>\n";
+  write_file(dir.path() / "cycle.urdf", urdf);
+  auto r = run_cli({"--fix", "--unsafe-fixes", "cycle.urdf"}, dir.path());
+  CHECK(r.exit_code == 2);
+  CHECK(read_file(dir.path() / "cycle.urdf") == urdf);
+  INFO(r.err);
+  CHECK(r.err.find("asset-lint: error: fixes for cycle.urdf undo each other and never converge: "
+                   "units-velocity-implausible writes '2.897' for '166' at cycle.urdf:15:59, then mimic-max-velocity "
+                   "writes '166' for '2.897' at cycle.urdf:15:59; nothing written\n") != std::string::npos);
+}

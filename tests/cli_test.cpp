@@ -49,7 +49,7 @@ TEST_CASE("cli: findings exit 1, one compiler-style line each", "[cli]") {
   // No colour codes when stdout is not a terminal, unless asked.
   CHECK(r.out.find('\033') == std::string::npos);
   auto colored = run_cli({"--color", "always", "bad.urdf"}, dir.path());
-  CHECK(colored.out.find("\033[1;31merror") != std::string::npos);
+  CHECK(colored.out.find("\033[1m\033[31merror:\033[0m") != std::string::npos);
 }
 
 TEST_CASE("cli: usage and I/O errors exit 2", "[cli]") {

@@ -54,6 +54,8 @@ TEST_CASE("report: the pre-commit hooks run asset-lint on staged assets", "[repo
   const std::string gripper = read_file(assetlint::test::fixtures_dir() / "report" / "gripper.urdf");
   write_file(assets / "gripper.urdf", gripper);
   write_file(assets / "notes.txt", "not an asset\n");
+  // A text USD layer with an upper-case extension: the hooks' pattern is case-insensitive.
+  write_file(assets / "Joints.USD", read_file(assetlint::test::fixtures_dir() / "report" / "joints.usda"));
   REQUIRE(shell("cd " + quote(assets.string()) + " && " + git + " init -q && " + git + " add .", dir.path() / "git.log",
                 out) == 0);
 
@@ -70,6 +72,9 @@ TEST_CASE("report: the pre-commit hooks run asset-lint on staged assets", "[repo
   CHECK(out.find("Failed") != std::string::npos);
   CHECK(out.find("gripper.urdf:9:19: error:") != std::string::npos);
   CHECK(out.find("notes.txt") == std::string::npos);
+  CHECK(out.find("Joints.USD:40:15: info:") != std::string::npos);
+  // require_serial: one run, one summary for both files.
+  CHECK(out.find("in 2 files.") != std::string::npos);
 
   // The fix hook applies only safe fixes: raising a mimic's velocity limit changes the robot
   // (unsafe since issue 15), so the file is left as it is and the hook still fails.

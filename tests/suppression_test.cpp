@@ -302,3 +302,55 @@ TEST_CASE("path globs with many stars match a long path by dynamic programming",
   CHECK(path_glob_match("**", "any/thing"));
   CHECK_FALSE(path_glob_match("?", "/"));
 }
+
+TEST_CASE("suppress: an end-of-line comment covers the element or statement it follows", "[suppress]") {
+  const std::string xml =
+      "<robot>\n"
+      "  <joint name=\"j\">\n"
+      "    <limit lower=\"1\"/>  <!-- asset-lint: ignore[a] -->\n"
+      "    <mimic joint=\"k\"/>\n"
+      "  </joint> <!-- asset-lint: ignore[b] -->\n"
+      "  <link name=\"l\"> <!-- asset-lint: ignore[c] -->\n"
+      "    <inertial/>\n"
+      "  </link>\n"
+      "</robot>\n";
+  const auto in_xml = find_suppressions(xml, CommentSyntax::Xml);
+  REQUIRE(in_xml.size() == 3);
+  auto covered = [](const std::string& text, const SuppressionComment& s) {
+    return text.substr(s.begin, s.end - s.begin);
+  };
+  CHECK(covered(xml, in_xml[0]) == "<limit lower=\"1\"/>");
+  CHECK(covered(xml, in_xml[1]) == "<joint name=\"j\">\n    <limit lower=\"1\"/>  <!-- asset-lint: ignore[a] -->\n"
+                                   "    <mimic joint=\"k\"/>\n  </joint>");
+  CHECK(covered(xml, in_xml[2]) == "<link name=\"l\"> <!-- asset-lint: ignore[c] -->\n    <inertial/>\n  </link>");
+
+  const std::string usda =
+      "#usda 1.0\n"
+      "def Xform \"a\" {  # asset-lint: ignore[p]\n"
+      "    float x = 1  # asset-lint: ignore[s]\n"
+      "    float[] y = [1,\n"
+      "        2]  # asset-lint: ignore[t]\n"
+      "    float z = 3\n"
+      "}\n";
+  const auto in_usda = find_suppressions(usda, CommentSyntax::Usda);
+  REQUIRE(in_usda.size() == 3);
+  CHECK(in_usda[0].target == "prim");
+  CHECK(covered(usda, in_usda[0]).starts_with("def Xform \"a\" {"));
+  CHECK(covered(usda, in_usda[0]).ends_with("float z = 3\n}"));
+  CHECK(in_usda[1].target == "statement");
+  CHECK(covered(usda, in_usda[1]) == "float x = 1  ");
+  CHECK(covered(usda, in_usda[2]) == "float[] y = [1,\n        2]  ");
+}
+
+TEST_CASE("suppress: an end-of-line suppression silences its own line's finding, and --fix keeps it", "[suppress]") {
+  test::TempDir dir;
+  const std::string urdf = test::replace_once(gripper(), "velocity=\"2.9\"/>",
+                                              "velocity=\"2.9\"/>  <!-- asset-lint: ignore[limits-inverted] -->");
+  write_file(dir.path() / "g.urdf", urdf);
+  auto r = run_cli({"--select", "limits-inverted,unused-suppression", "g.urdf"}, dir.path());
+  CHECK(r.exit_code == 0);
+  CHECK(r.out == "No problems found in 1 file.\n");
+  auto fixed = run_cli({"--fix", "--select", "limits-inverted,unused-suppression", "g.urdf"}, dir.path());
+  CHECK(fixed.exit_code == 0);
+  CHECK(read_file(dir.path() / "g.urdf") == urdf);
+}

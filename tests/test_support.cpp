@@ -58,6 +58,12 @@ CommandResult run_cli_with_input(const std::vector<std::string>& args, const std
   return result;
 }
 
+std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("'" + from + "' is not in the text");
+  return text.replace(at, from.size(), to);
+}
+
 TempDir::TempDir() {
   static std::atomic<int> counter{0};
   path_ = std::filesystem::temp_directory_path() /

@@ -12,6 +12,8 @@ inline std::filesystem::path fixtures_dir() { return source_dir() / "fixtures"; 
 std::filesystem::path corpus_dir();
 
 std::string read_file(const std::filesystem::path& path);
+// `text` with the first `from` replaced by `to`; throws when `from` is not in it.
+std::string replace_once(std::string text, const std::string& from, const std::string& to);
 void write_file(const std::filesystem::path& path, const std::string& text);
 
 struct CommandResult {

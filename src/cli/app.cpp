@@ -3,12 +3,15 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <string_view>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "cli/options.h"
 #include "cli/report_writer.h"
 #include "cli/rule_pages.h"
+#include "commands/add_suppressions.h"
 #include "commands/check.h"
 #include "commands/compare_command.h"
 #include "commands/exit_status.h"
@@ -16,8 +19,10 @@
 #include "commands/stdin.h"
 #include "commands/simulate.h"
 #include "commands/tune.h"
+#include "config/project_root.h"
 #include "config/resolver.h"
 #include "pipeline/discovery.h"
+#include "report/settings_report.h"
 
 namespace assetlint::cli {
 namespace {
@@ -26,17 +31,32 @@ using commands::kExitClean;
 using commands::kExitError;
 using commands::kExitFindings;
 
-int run_rule_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (args.size() != 2) {
-    err << "asset-lint: error: usage: asset-lint rule RULE-ID\n";
-    return kExitError;
-  }
-  return show_rule(args[1], out, err);
+// --color auto: NO_COLOR (set, not empty) turns colour off; CLICOLOR_FORCE or FORCE_COLOR
+// (set, not empty, not "0") turn it on even off a terminal; TERM=dumb turns it off;
+// otherwise colour only on a terminal, never into --output-file.
+bool use_color(const Options& options, bool out_is_terminal) {
+  if (options.color != "auto") return options.color == "always";
+  auto value = [](const char* name) -> std::string_view {
+    const char* v = std::getenv(name);
+    return v ? v : "";
+  };
+  if (!value("NO_COLOR").empty()) return false;
+  for (const char* force : {"CLICOLOR_FORCE", "FORCE_COLOR"})
+    if (!value(force).empty() && value(force) != "0") return true;
+  if (value("TERM") == "dumb") return false;
+  return out_is_terminal && options.output_file.empty();
 }
 
-bool use_color(const Options& options, bool out_is_terminal) {
-  return options.color == "always" ||
-         (options.color == "auto" && out_is_terminal && options.output_file.empty() && !std::getenv("NO_COLOR"));
+int show_settings(const std::string& file, config::SettingsResolver& resolver, std::ostream& out, std::ostream& err) {
+  const std::string path = spelled(file, std::filesystem::current_path());
+  if (auto error = resolver.prepare({path})) {
+    err << "asset-lint: error: " << error->to_string() << "\n";
+    return kExitError;
+  }
+  const Settings& settings = resolver.for_file(path);
+  std::string tree = config::checked_root(path, settings);
+  write_settings(out, path, settings, resolver.file_selection_for(path), tree.empty() ? "the file's directory" : tree);
+  return kExitClean;
 }
 
 // Checks or fixes the files the options name (or standard input), writing the report to
@@ -66,21 +86,36 @@ int run_files(const Options& options, bool compare, std::istream& in, std::ostre
     return commands::run_stdin(in, resolver.for_file(options.stdin_filename), stdin_options, out, err,
                                write_report);
   }
-  const PathExpansion expansion = expand_paths(options.paths);
+  const SelectionFor selection_for = [&resolver](const std::string& path) -> const config::FileSelection& {
+    return resolver.file_selection_for(path);
+  };
+  if (!options.show_settings.empty()) return show_settings(options.show_settings, resolver, out, err);
+  const PathExpansion expansion = expand_paths(options.paths, selection_for);
+  if (options.show_files) {
+    commands::announce_expansion(expansion, err);
+    for (const auto& file : expansion.files) out << file << "\n";
+    return expansion.errors.empty() ? kExitClean : kExitError;
+  }
   if (auto error = resolver.prepare(expansion.files)) {
     err << "asset-lint: error: " << error->to_string() << "\n";
     return kExitError;
   }
-  if (options.fix || options.diff) {
+  if (options.fix || options.diff || options.add_suppressions) {
     commands::FixCommandOptions fix_options;
+    if (options.add_suppressions) {
+      fix_options.make_hook = commands::suppression_inserter;
+      fix_options.written = commands::describe_added_suppressions;
+    }
     fix_options.diff = options.diff;
     fix_options.unsafe = options.unsafe_fixes;
     fix_options.jobs = options.jobs;
     fix_options.fail_on = *parse_severity(options.fail_on);
+    fix_options.selection_for = selection_for;
     return commands::run_fix_command(options.paths, resolver.as_function(), fix_options, out, err, write_report);
   }
-  return commands::run_check(expansion, resolver.as_function(), commands::CheckOptions{options.jobs, *parse_severity(options.fail_on)}, err,
-                             write_report);
+  const commands::CheckOptions check_options{options.jobs, *parse_severity(options.fail_on), options.baseline,
+                                             options.write_baseline};
+  return commands::run_check(expansion, resolver.as_function(), check_options, err, write_report);
 }
 
 int run_check_command(const std::vector<std::string>& args, std::istream& in, std::ostream& out,
@@ -93,11 +128,11 @@ int run_check_command(const std::vector<std::string>& args, std::istream& in, st
     out << "asset-lint " << ASSET_LINT_VERSION << "\n";
     return kExitClean;
   }
+  if (!validate_options(options, err)) return kExitError;
   if (options.list_rules) {
-    list_rules(out);
+    list_rules(out, options.format == "json");
     return kExitClean;
   }
-  if (!validate_options(options, err)) return kExitError;
   std::ofstream report_file;
   if (!options.output_file.empty()) {
     report_file.open(options.output_file, std::ios::binary | std::ios::trunc);

@@ -18,8 +18,24 @@ void add_options(CLI::App& app, Options& o) {
       ->delimiter(',')
       ->allow_extra_args(false);
   app.add_option("--ignore", o.ignore, "Skip these rules (comma list, globs)")->delimiter(',')->allow_extra_args(false);
-  app.add_option("--output-format", o.format, "Output format: text, concise, json, sarif, github, gitlab or junit")
-      ->check(CLI::IsMember({"text", "concise", "json", "sarif", "github", "gitlab", "junit"}));
+  app.add_option("--extend-select", o.extend_select, "Run these rules too, on top of --select or the configuration")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  app.add_option("--extend-ignore", o.extend_ignore, "Skip these rules too, on top of --ignore or the configuration")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  app.add_option("--exclude", o.exclude,
+                 "Leave out of directory walks the paths matching these globs (replaces `exclude` and its default '.*')")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  app.add_option("--extend-exclude", o.extend_exclude, "Leave these globs out too, on top of `exclude`")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  app.add_flag("--no-respect-gitignore", o.no_respect_gitignore, "Walk into files and directories .gitignore ignores");
+  app.add_flag("--force-exclude", o.force_exclude,
+               "Apply the exclusions to paths named on the command line too (for pre-commit and editors)");
+  app.add_option("--output-format", o.format, "Output format: text, full (text with the source lines), concise, json, sarif, github, gitlab or junit")
+      ->check(CLI::IsMember({"text", "full", "concise", "json", "sarif", "github", "gitlab", "junit"}));
   app.add_option("--stdin-filename", o.stdin_filename,
                  "With the path '-': lint standard input as this file (its configuration and layers); "
                  "with --fix, print the fixed text");
@@ -28,9 +44,15 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--fail-on", o.fail_on,
                  "The least severe finding that makes the exit status 1: info, warning (default) or error")
       ->check(CLI::IsMember({"info", "warning", "error"}));
+  app.add_option("--baseline", o.baseline,
+                 "Report only findings not recorded in this baseline file; name its entries that no longer occur");
+  app.add_option("--write-baseline", o.write_baseline,
+                 "Record every current finding in this baseline file (instead of reporting them) and exit 0");
   app.add_flag("--exit-zero", o.exit_zero, "Exit 0 even when findings remain (still 2 on errors)");
   app.add_flag("-q,--quiet", o.quiet, "Text output: only the findings, no summary line");
-  app.add_option("--color", o.color, "Colour the text output")->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_option("--color", o.color,
+                 "Colour the text output (auto: on a terminal; NO_COLOR or TERM=dumb turn it off, CLICOLOR_FORCE or "
+                 "FORCE_COLOR on)")->check(CLI::IsMember({"auto", "always", "never"}));
   app.add_option("-j,--jobs", o.jobs, "Files checked in parallel (default: one per core)")->check(CLI::Range(1u, 256u));
   app.add_option("--config", o.config_path,
                  "Use this asset-lint.toml for every file (default: the nearest one above each file)")
@@ -53,10 +75,15 @@ void add_options(CLI::App& app, Options& o) {
       ->allow_extra_args(false);
   app.add_option("--rtol", o.rtol, "compare: relative tolerance (default 1e-6)")->check(CLI::PositiveNumber);
   app.add_option("--fix-side", o.fix_side, "compare: the file whose values --fix rewrites");
-  app.add_flag("--list-rules", o.list_rules, "List every rule and exit");
+  app.add_flag("--add-suppressions", o.add_suppressions,
+               "Add an inline suppression comment for every current finding (in each file's own syntax)");
+  app.add_flag("--list-rules", o.list_rules, "List every rule and exit (--output-format json: as JSON)");
+  app.add_flag("--show-files", o.show_files, "Print the files a run would check, one per line, and exit");
+  app.add_option("--show-settings", o.show_settings,
+                 "Print the settings a check of FILE would use, each with where it came from, and exit");
   app.add_flag("--version", o.version, "Print the version and exit");
   app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint rule RULE-ID      print a rule's documentation\n\n"
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint rule RULE-ID      print a rule's documentation (rule --all: every rule)\n\n"
       "Exit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
       "remain, 2 usage, configuration or I/O error.\n"
       "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
@@ -96,11 +123,15 @@ ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& 
   }
   options.select_given = app.count("--select") > 0;
   options.ignore_given = app.count("--ignore") > 0;
+  options.exclude_given = app.count("--exclude") > 0;
   return {std::move(options), 0};
 }
 
 bool validate_options(const Options& o, std::ostream& err) {
-  if (!validate_patterns(o.select, "--select", err) || !validate_patterns(o.ignore, "--ignore", err)) return false;
+  if (!validate_patterns(o.select, "--select", err) || !validate_patterns(o.ignore, "--ignore", err) ||
+      !validate_patterns(o.extend_select, "--extend-select", err) ||
+      !validate_patterns(o.extend_ignore, "--extend-ignore", err))
+    return false;
   const bool stdin_named = std::find(o.paths.begin(), o.paths.end(), "-") != o.paths.end();
   if (stdin_named && (o.paths.size() != 1 || o.stdin_filename.empty())) {
     err << "asset-lint: error: '-' (standard input) must be the only path, with --stdin-filename PATH\n";
@@ -110,12 +141,30 @@ bool validate_options(const Options& o, std::ostream& err) {
     err << "asset-lint: error: --diff does not read standard input; use --fix to print the fixed text\n";
     return false;
   }
-  if (o.diff && o.format != "text" && o.format != "concise") {
+  if (o.diff && o.format != "text" && o.format != "full" && o.format != "concise") {
     err << "asset-lint: error: --diff prints a unified diff; it cannot be combined with --output-format " << o.format
         << "\n";
     return false;
   }
-  if (o.statistics && o.format != "text" && o.format != "concise" && o.format != "json") {
+  if (o.add_suppressions && (o.fix || o.diff || stdin_named)) {
+    err << "asset-lint: error: --add-suppressions edits files itself; it does not combine with --fix, --diff or "
+           "standard input\n";
+    return false;
+  }
+  if ((!o.baseline.empty() || !o.write_baseline.empty()) && (o.fix || o.diff || stdin_named)) {
+    err << "asset-lint: error: --baseline and --write-baseline work on a check of files, not with --fix, --diff "
+           "or standard input\n";
+    return false;
+  }
+  if (!o.baseline.empty() && !o.write_baseline.empty()) {
+    err << "asset-lint: error: give --baseline or --write-baseline, not both (--write-baseline alone rewrites it)\n";
+    return false;
+  }
+  if (o.list_rules && o.format != "text" && o.format != "json") {
+    err << "asset-lint: error: --list-rules prints text or --output-format json\n";
+    return false;
+  }
+  if (o.statistics && o.format != "text" && o.format != "full" && o.format != "concise" && o.format != "json") {
     err << "asset-lint: error: --statistics works with --output-format text, concise or json\n";
     return false;
   }
@@ -126,6 +175,14 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   config::CommandLineOverrides overrides;
   if (o.select_given) overrides.select = o.select;
   if (o.ignore_given) overrides.ignore = o.ignore;
+  overrides.extend_select = o.extend_select;
+  if (o.exclude_given) overrides.files.exclude = o.exclude;
+  overrides.files.extend_exclude = o.extend_exclude;
+  overrides.files.no_respect_gitignore = o.no_respect_gitignore;
+  overrides.files.force_exclude = o.force_exclude;
+  std::error_code cwd_ec;
+  overrides.working_directory = std::filesystem::current_path(cwd_ec).string();
+  overrides.extend_ignore = o.extend_ignore;
   overrides.timesteps_per_second = o.timesteps_per_second;
   if (o.position_iterations) overrides.position_iterations = static_cast<double>(*o.position_iterations);
   overrides.allow_outside_root = o.allow_outside_root;

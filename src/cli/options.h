@@ -11,17 +11,21 @@ namespace assetlint::cli {
 
 struct Options {
   std::vector<std::string> paths;
-  std::vector<std::string> select, ignore;
+  std::vector<std::string> select, ignore, extend_select, extend_ignore;
   bool select_given = false, ignore_given = false;
   std::string format = "text";
   std::string color = "auto";
   std::string fail_on = "warning";
-  bool list_rules = false, version = false;
-  bool fix = false, unsafe_fixes = false, diff = false;
+  bool list_rules = false, version = false, show_files = false;
+  std::string show_settings;  // --show-settings FILE
+  bool fix = false, unsafe_fixes = false, diff = false, add_suppressions = false;
   bool statistics = false, exit_zero = false, quiet = false;
   std::string output_file;
   std::string stdin_filename;  // with the path "-": the file the text on stdin stands for
   std::string config_path;
+  std::vector<std::string> exclude, extend_exclude;
+  bool exclude_given = false, no_respect_gitignore = false, force_exclude = false;
+  std::string baseline, write_baseline;  // --baseline FILE, --write-baseline FILE
   bool allow_outside_root = false;
   std::string root;  // --root
   std::optional<double> timesteps_per_second;

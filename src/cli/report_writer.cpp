@@ -34,7 +34,7 @@ commands::WriteReport report_writer(const Options& options, bool use_color, conf
       write_junit(
           out, reports, [&](const FileReport& r) { return rules_run_on(resolver.for_file(r.path), r.path); },
           problems);
-    } else write_text(out, reports, TextOptions{use_color, !options.quiet}, problems);
+    } else write_text(out, reports, TextOptions{use_color, !options.quiet, format == "full"}, problems);
     out.flush();
   };
 }

@@ -61,7 +61,7 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
   std::vector<Target> targets;
   std::set<std::string> seen;
   for (const auto& argument : paths) {
-    PathExpansion expansion = expand_paths({argument});
+    PathExpansion expansion = expand_paths({argument}, options.selection_for);
     RunProblems found = announce_expansion(expansion, err);
     run_problems.errors.insert(run_problems.errors.end(), found.errors.begin(), found.errors.end());
     run_problems.binary_usd += found.binary_usd;
@@ -84,6 +84,7 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
       fix::FixOptions fix_options;
       fix_options.unsafe = options.unsafe;
       fix_options.scope = targets[i].scope;
+      if (options.make_hook) fix_options.on_report = options.make_hook();
       results[i] = fix::fix_file(targets[i].path, settings(targets[i].path), fix_options);
     }
   };
@@ -130,7 +131,10 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
         write_failed = true;
         continue;
       }
-      err << fmt::format("asset-lint: fixed {} in {}\n", problems(file.fixes), file.path);
+      err << "asset-lint: "
+          << (options.written ? options.written(file)
+                              : fmt::format("fixed {} in {}", problems(file.fixes), file.path))
+          << "\n";
     }
     if (write_failed || deferred) {
       // Report what is on disk now (the writer of a shared layer may come later).

@@ -1,11 +1,13 @@
 #pragma once
 // `asset-lint --fix` / `--diff`: fixes every file the paths name, writes (or diffs)
 // the results, reports what remains. Called by the command line after option parsing.
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "commands/check.h"
+#include "fix/fixer.h"
 #include "pipeline/lint.h"
 
 namespace assetlint::commands {
@@ -15,6 +17,12 @@ struct FixCommandOptions {
   bool unsafe = false;  // --unsafe-fixes
   unsigned jobs = 1;
   Severity fail_on = Severity::Warning;
+  SelectionFor selection_for;  // exclusions of the directory walks (empty: the defaults)
+  // --add-suppressions: makes each file's fixer hook (FixOptions::on_report), which decides
+  // the edits instead of the rules' fixes; and the word for what was written.
+  std::function<std::function<void(FileReport&)>()> make_hook;
+  // The line naming a written file (default: "fixed 2 problems in a.urdf").
+  std::function<std::string(const fix::FixedFile& file)> written;
 };
 
 // Fixes the files under `paths` (directories searched as for checking). With `diff`,

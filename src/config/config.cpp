@@ -17,23 +17,34 @@ struct Invalid {
 
 class Loader {
  public:
-  Loader(std::string path, Settings& settings) : path_(std::move(path)), settings_(settings) {}
+  Loader(std::string path, Settings& settings, FileSelectionConfig* files, std::filesystem::path base)
+      : files_(files), base_(std::move(base)), path_(std::move(path)), settings_(settings) {}
 
   void load(const toml::table& root) {
     for (const auto& [key, node] : root) {
       const std::string_view name = key.str();
       if (name == "select") settings_.selection.select = rule_patterns(node, name);
       else if (name == "ignore") settings_.selection.ignore = rule_patterns(node, name);
-      else if (name == "per-file-ignores") per_file_ignores(table(node, name));
+      else if (name == "extend-select") append(extend_select_, rule_patterns(node, name));
+      else if (name == "extend-ignore") append(extend_ignore_, rule_patterns(node, name));
+      else if (name == "per-file-ignores" || name == "extend-per-file-ignores") per_file_ignores(table(node, name), name);
+      else if (name == "exclude" || name == "extend-exclude" || name == "respect-gitignore") file_selection(node, name);
       else if (name == "simulation") simulation(table(node, name));
       else if (name == "gripper") gripper(table(node, name));
       else if (name == "drives") drives(table(node, name));
       else if (name == "rules") rules(table(node, name));
       else unknown(key, "");
     }
+    // After the loop: `extend-select` adds to `select` wherever the two stand in the file.
+    extend(settings_.selection.select, extend_select_, true);
+    extend(settings_.selection.ignore, extend_ignore_, false);
   }
 
  private:
+  std::vector<std::string> extend_select_, extend_ignore_;
+  FileSelectionConfig* files_;  // read only when asked for (nullptr: validated, not kept)
+  std::filesystem::path base_;  // the configuration's directory, absolute
+
   std::string origin(const toml::node& node) const {
     return fmt::format("{}:{}", path_, node.source().begin.line);
   }
@@ -96,13 +107,40 @@ class Loader {
     return patterns;
   }
 
+  // exclude = ["vendor", "robots/old/**"], extend-exclude = [...], respect-gitignore = false
+  void file_selection(const toml::node& node, std::string_view key) {
+    FileSelectionConfig ignored;
+    FileSelectionConfig& files = files_ ? *files_ : ignored;
+    if (key == "respect-gitignore") {
+      const auto* flag = node.as_boolean();
+      if (!flag) fail(node, "'respect-gitignore' must be true or false");
+      files.respect_gitignore = Configured<bool>{flag->get(), origin(node)};
+      return;
+    }
+    const auto* array = node.as_array();
+    if (!array) fail(node, fmt::format("'{}' must be an array of path globs", key));
+    std::vector<ExcludePattern> patterns;
+    for (const auto& item : *array) {
+      std::string glob = string(item, key);
+      if (glob.empty()) fail(item, fmt::format("'{}': a glob is empty", key));
+      patterns.push_back({std::move(glob), base_.string(), origin(item)});
+    }
+    if (key == "exclude") files.exclude = std::move(patterns);
+    else files.extend_exclude = std::move(patterns);
+  }
+
+  static void append(std::vector<std::string>& to, std::vector<std::string> more) {
+    to.insert(to.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+  }
+
   // per-file-ignores = { "legacy/**" = ["units-*"], "*.usda" = ["stale-schema-attribute"] }
-  void per_file_ignores(const toml::table& t) {
+  // (extend-per-file-ignores adds entries the same way).
+  void per_file_ignores(const toml::table& t, std::string_view table_name) {
     for (const auto& [glob, node] : t) {
-      if (glob.str().empty()) fail(node, "per-file-ignores: the file glob is empty");
+      if (glob.str().empty()) fail(node, fmt::format("{}: the file glob is empty", table_name));
       PerFileIgnore entry;
       entry.glob = std::string(glob.str());
-      entry.rules = rule_patterns(node, fmt::format("per-file-ignores.\"{}\"", glob.str()));
+      entry.rules = rule_patterns(node, fmt::format("{}.\"{}\"", table_name, glob.str()));
       entry.origin = origin(node);
       settings_.per_file_ignores.push_back(std::move(entry));
     }
@@ -192,11 +230,20 @@ std::string ConfigError::to_string() const {
   return line ? fmt::format("{}:{}:{}: {}", path, line, column, message) : fmt::format("{}: {}", path, message);
 }
 
-std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path) {
+void extend(std::vector<std::string>& list, const std::vector<std::string>& more, bool is_select) {
+  if (more.empty()) return;
+  if (is_select && list.empty()) list.push_back("*");
+  list.insert(list.end(), more.begin(), more.end());
+}
+
+std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path,
+                                FileSelectionConfig* files) {
   Settings updated = settings;
   try {
     toml::table root = toml::parse_file(path);
-    Loader(display_path.empty() ? path : display_path, updated).load(root);
+    std::error_code ec;
+    const std::filesystem::path base = std::filesystem::absolute(path, ec).lexically_normal().parent_path();
+    Loader(display_path.empty() ? path : display_path, updated, files, base).load(root);
   } catch (const toml::parse_error& error) {
     return ConfigError{path, static_cast<std::uint32_t>(error.source().begin.line),
                        static_cast<std::uint32_t>(error.source().begin.column), std::string(error.description())};

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "config/file_selection.h"
 #include "engine/settings.h"
 
 namespace assetlint::config {
@@ -20,7 +21,13 @@ struct ConfigError {
 // Reads a configuration file into `settings` (on top of what it holds).
 // Unknown keys and bad values are errors; nothing is applied when there is one.
 // Origins in messages name the file as `display_path` (default: `path`).
-std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path = "");
+// `files`, when given, receives the file-selection keys (exclude, extend-exclude, respect-gitignore).
+std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path = "",
+                                FileSelectionConfig* files = nullptr);
+
+// Adds `more` to a select or ignore list. Extending an empty select list (every rule)
+// keeps every rule: it becomes `*` plus `more`.
+void extend(std::vector<std::string>& list, const std::vector<std::string>& more, bool is_select);
 
 // The nearest asset-lint.toml in the file's directory or an ancestor; empty if none.
 std::filesystem::path discover(const std::filesystem::path& file);

@@ -12,6 +12,8 @@ const Settings& SettingsResolver::load(const std::string& config_path, std::opti
   if (!config_path.empty()) error = config::load(config_path, *settings);
   if (overrides_.select) settings->selection.select = *overrides_.select;
   if (overrides_.ignore) settings->selection.ignore = *overrides_.ignore;
+  extend(settings->selection.select, overrides_.extend_select, true);
+  extend(settings->selection.ignore, overrides_.extend_ignore, false);
   if (overrides_.timesteps_per_second)
     settings->simulation.timesteps_per_second = Configured<double>{*overrides_.timesteps_per_second, "--timesteps-per-second"};
   if (overrides_.position_iterations)
@@ -46,6 +48,20 @@ const Settings& SettingsResolver::for_file(const std::string& path) {
 
 std::function<const Settings&(const std::string&)> SettingsResolver::as_function() {
   return [this](const std::string& path) -> const Settings& { return for_file(path); };
+}
+
+const FileSelection& SettingsResolver::file_selection_for(const std::string& path) {
+  const std::string config_path = explicit_config_ ? *explicit_config_ : discover(path).string();
+  std::lock_guard lock(mutex_);
+  if (auto it = selections_.find(config_path); it != selections_.end()) return it->second;
+  std::optional<FileSelectionConfig> config;
+  if (!config_path.empty()) {
+    config.emplace();
+    Settings unused;
+    config::load(config_path, unused, "", &*config);  // an invalid file was reported by prepare()
+  }
+  return selections_.emplace(config_path, effective_file_selection(config, overrides_.files, overrides_.working_directory))
+      .first->second;
 }
 
 }  // namespace assetlint::config

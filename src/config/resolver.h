@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "config/config.h"
+#include "config/file_selection.h"
 #include "engine/settings.h"
 
 namespace assetlint::config {
@@ -18,11 +19,14 @@ namespace assetlint::config {
 struct CommandLineOverrides {
   std::optional<std::vector<std::string>> select;
   std::optional<std::vector<std::string>> ignore;
+  std::vector<std::string> extend_select, extend_ignore;  // added to the lists above (or the configuration's)
   std::optional<double> timesteps_per_second;
   std::optional<double> position_iterations;
   std::vector<std::string> trees;  // directories named on the command line, and the working directory
   std::string root;                // --root: the checked tree for every file
   bool allow_outside_root = false;
+  FileSelectionOverrides files;     // --exclude, --extend-exclude, --no-respect-gitignore, --force-exclude
+  std::string working_directory;    // what command-line exclude globs are relative to
 };
 
 class SettingsResolver {
@@ -35,6 +39,9 @@ class SettingsResolver {
   // The settings of a file (prepare() must have seen it, or it is loaded now). Thread-safe.
   const Settings& for_file(const std::string& path);
   std::function<const Settings&(const std::string&)> as_function();
+  // Which files a walk through `path` leaves out (the nearest asset-lint.toml above it, or
+  // --config, and the command line). Thread-safe.
+  const FileSelection& file_selection_for(const std::string& path);
 
  private:
   const Settings& load(const std::string& config_path, std::optional<ConfigError>& error);
@@ -44,6 +51,7 @@ class SettingsResolver {
   std::mutex mutex_;
   std::map<std::string, std::unique_ptr<Settings>> by_config_;  // "" = no configuration file
   std::map<std::string, const Settings*> by_file_;  // found by prepare(): no second directory walk
+  std::map<std::string, FileSelection> selections_;  // by configuration path ("" = none)
 };
 
 }  // namespace assetlint::config

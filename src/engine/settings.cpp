@@ -1,5 +1,7 @@
 #include "engine/settings.h"
 
+#include <algorithm>
+
 namespace assetlint {
 
 bool glob_match(std::string_view pattern, std::string_view text) {
@@ -23,14 +25,32 @@ bool glob_match(std::string_view pattern, std::string_view text) {
   return p == pattern.size();
 }
 
+namespace {
+
+// How specific a selector is, as ruff ranks them: an exact id beats any glob, and a glob
+// with a longer literal prefix beats a shorter one (`mimic-*` beats `*`).
+std::size_t specificity(std::string_view pattern) {
+  const std::size_t wildcard = pattern.find_first_of("*?");
+  return wildcard == std::string_view::npos ? std::string_view::npos : wildcard;
+}
+
+// The specificity of the most specific pattern matching `rule_id`; nullopt when none does.
+std::optional<std::size_t> best_match(const std::vector<std::string>& patterns, std::string_view rule_id) {
+  std::optional<std::size_t> best;
+  for (const auto& pattern : patterns)
+    if (glob_match(pattern, rule_id)) best = std::max(best.value_or(0), specificity(pattern));
+  return best;
+}
+
+}  // namespace
+
 bool RuleSelection::enabled(std::string_view rule_id) const {
-  auto matches_any = [&](const std::vector<std::string>& patterns) {
-    for (const auto& pattern : patterns)
-      if (glob_match(pattern, rule_id)) return true;
-    return false;
-  };
-  if (!select.empty() && !matches_any(select)) return false;
-  return !matches_any(ignore);
+  // No select list selects every rule, as the least specific selector (`*`) would.
+  const std::optional<std::size_t> selected = select.empty() ? std::optional<std::size_t>(0) : best_match(select, rule_id);
+  if (!selected) return false;
+  const std::optional<std::size_t> ignored = best_match(ignore, rule_id);
+  // The more specific selector wins; on a tie, ignore does.
+  return !ignored || *selected > *ignored;
 }
 
 std::optional<double> Settings::rule_option(std::string_view rule, std::string_view option) const {

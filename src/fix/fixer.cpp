@@ -47,6 +47,39 @@ int fix_stage(std::string_view rule) {
   return 2;
 }
 
+// When the rounds came back to texts they started from, the fixes that undo each other:
+// "mimic-max-velocity writes '166' for '2' at a.urdf:15:59, then units-velocity-implausible
+// writes '2.9' for '166' at a.urdf:15:59". nullopt when the rounds never repeat.
+std::optional<std::string> describe_cycle(const std::vector<FixRound>& rounds) {
+  auto shorten = [](std::string_view text) {
+    return text.size() > 40 ? std::string(text.substr(0, 37)) + "..." : std::string(text);
+  };
+  for (std::size_t j = 1; j < rounds.size(); ++j) {
+    for (std::size_t k = 0; k < j; ++k) {
+      if (rounds[j].texts != rounds[k].texts) continue;
+      std::vector<std::string> steps;
+      for (std::size_t r = k; r < j; ++r) {
+        for (const AppliedFix& fix : rounds[r].applied) {
+          if (fix.edits.empty()) continue;
+          const AppliedFix::PathEdit& edit = fix.edits.front();
+          std::string text;
+          for (const auto& [path, round_text] : rounds[r].texts)
+            if (path == edit.path) text = round_text;
+          const std::size_t offset = std::min(edit.offset, text.size());
+          const LineColumn at = SourceFile(edit.path, text).position(offset);
+          steps.push_back(fmt::format("{} writes '{}' for '{}' at {}:{}:{}", fix.rule, shorten(edit.replacement),
+                                      shorten(std::string_view(text).substr(offset, edit.length)), edit.path, at.line,
+                                      at.column));
+        }
+      }
+      std::string list;
+      for (std::size_t i = 0; i < steps.size(); ++i) list += (i ? ", then " : "") + steps[i];
+      return list;
+    }
+  }
+  return std::nullopt;
+}
+
 // A candidate fix of one round: the diagnostic's fix, with its edits' paths.
 struct Candidate {
   const Diagnostic* diagnostic = nullptr;
@@ -107,9 +140,13 @@ class Fixer {
       std::vector<Candidate> candidates = collect(current, result);
       if (candidates.empty()) break;
       if (static_cast<int>(result.rounds.size()) >= options_.max_rounds) {
-        result.error = fmt::format(
-            "fixes for {} did not converge after {} rounds ({} more to apply); nothing written", path_,
-            options_.max_rounds, candidates.size());
+        if (auto cycle = describe_cycle(result.rounds))
+          result.error = fmt::format("fixes for {} undo each other and never converge: {}; nothing written", path_,
+                                     *cycle);
+        else
+          result.error = fmt::format(
+              "fixes for {} did not converge after {} rounds ({} more to apply); nothing written", path_,
+              options_.max_rounds, candidates.size());
         result.files.clear();
         result.remaining = result.initial;
         return result;

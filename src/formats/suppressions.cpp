@@ -63,6 +63,13 @@ CommentSyntax comment_syntax_for(std::string_view path) {
   return ext == ".urdf" || ext == ".xml" || ext == ".mjcf" ? CommentSyntax::Xml : CommentSyntax::Usda;
 }
 
+std::string suppression_comment(CommentSyntax syntax, bool file_level, const std::vector<std::string>& rules) {
+  std::string list;
+  for (const auto& rule : rules) list += (list.empty() ? "" : ", ") + rule;
+  const std::string directive = fmt::format("asset-lint: {}[{}]", file_level ? "ignore-file" : "ignore", list);
+  return syntax == CommentSyntax::Xml ? "<!-- " + directive + " -->" : "# " + directive;
+}
+
 std::vector<SuppressionComment> find_suppressions(std::string_view text, CommentSyntax syntax) {
   if (text.find("asset-lint:") == std::string_view::npos) return {};
   return syntax == CommentSyntax::Xml ? suppression_syntax::scan_xml(text) : suppression_syntax::scan_usda(text);

@@ -39,4 +39,8 @@ std::vector<SuppressionComment> find_suppressions(std::string_view text, Comment
 // The syntax of a source by its path: .urdf (and .xml) is XML, anything else a USD layer.
 CommentSyntax comment_syntax_for(std::string_view path);
 
+// The comment that suppresses `rules` (ids or globs) in the next element or statement, or
+// with `file_level` in the whole file: "<!-- asset-lint: ignore[a, b] -->", "# asset-lint: ignore[a]".
+std::string suppression_comment(CommentSyntax syntax, bool file_level, const std::vector<std::string>& rules);
+
 }  // namespace assetlint

@@ -8,6 +8,7 @@
 
 #include "engine/file_system.h"
 #include "formats/file_kind.h"
+#include "pipeline/gitignore.h"
 
 namespace assetlint {
 namespace {
@@ -21,6 +22,14 @@ std::string head_of(const fs::path& path) {
   return std::string(buffer, static_cast<std::size_t>(in.gcount()));
 }
 
+const config::FileSelection& default_selection() {
+  static const config::FileSelection selection = [] {
+    std::error_code ec;
+    return config::effective_file_selection(std::nullopt, {}, fs::current_path(ec).string());
+  }();
+  return selection;
+}
+
 bool mjcf_text(const fs::path& path) {
   std::string error;
   auto text = disk().read(path.string(), error);
@@ -30,7 +39,14 @@ bool mjcf_text(const fs::path& path) {
 struct Walk {
   const fs::path& cwd;
   PathExpansion& out;
+  const SelectionFor& selection_for;
   std::vector<std::string> found;
+
+  bool left_out(const fs::path& path, bool is_directory, const GitIgnore& gitignore) const {
+    const std::string spelled_path = spelled(path, cwd);
+    if (selection_for(spelled_path).excluding(spelled_path)) return true;
+    return gitignore.ignored(path, is_directory);
+  }
 
   void error(const fs::path& path, const char* what, const std::error_code& ec) {
     const std::string shown = spelled(path, cwd);
@@ -55,7 +71,7 @@ struct Walk {
   }
 
   // Directory by directory, so that one unreadable directory is named and the walk goes on.
-  void directory(const fs::path& dir) {
+  void directory(const fs::path& dir, const GitIgnore& gitignore) {
     std::error_code ec;
     fs::directory_iterator it(dir, ec), end;
     if (ec) return error(dir, "directory", ec);
@@ -73,14 +89,14 @@ struct Walk {
       if (fs::is_directory(status)) {
         // Symlinked directories are not followed (a link to an ancestor would never end).
         std::error_code link_ec;
-        if (!path.filename().string().starts_with(".") && !it->is_symlink(link_ec)) subdirectories.push_back(path);
+        if (!it->is_symlink(link_ec) && !left_out(path, true, gitignore)) subdirectories.push_back(path);
       } else if (fs::is_regular_file(status)) {
-        file(path);
+        if (!left_out(path, false, gitignore)) file(path);
       }
     }
     if (ec) error(dir, "directory", ec);
     std::sort(subdirectories.begin(), subdirectories.end());
-    for (const auto& sub : subdirectories) directory(sub);
+    for (const auto& sub : subdirectories) directory(sub, gitignore.enter(sub));
   }
 };
 
@@ -97,10 +113,14 @@ std::string spelled(const std::filesystem::path& path, const std::filesystem::pa
   return text.empty() ? "." : text;
 }
 
-PathExpansion expand_paths(const std::vector<std::string>& paths) {
+PathExpansion expand_paths(const std::vector<std::string>& paths, const SelectionFor& given_selection_for) {
   PathExpansion out;
   std::error_code cwd_ec;
   const fs::path cwd = fs::current_path(cwd_ec);
+  const SelectionFor selection_for =
+      given_selection_for ? given_selection_for : [](const std::string&) -> const config::FileSelection& {
+        return default_selection();
+      };
   for (const auto& named : paths) {
     const std::string path = spelled(named, cwd);
     std::error_code ec;
@@ -111,12 +131,18 @@ PathExpansion expand_paths(const std::vector<std::string>& paths) {
                                           : fmt::format("cannot read '{}': {}", path, ec.message())});
       continue;
     }
+    // Named paths are checked whatever the exclusions say, unless --force-exclude (as
+    // pre-commit and editors name every file).
+    const config::FileSelection& named_selection = selection_for(path);
+    if (named_selection.force_exclude && path != "." && named_selection.excluding(path)) continue;
     if (!fs::is_directory(status)) {
       out.files.push_back(path);
       continue;
     }
-    Walk walk{cwd, out, {}};
-    walk.directory(path);
+    Walk walk{cwd, out, selection_for, {}};
+    // The selection inside the directory: its own asset-lint.toml counts.
+    const bool gitignore = selection_for((fs::path(path) / "*").generic_string()).respect_gitignore.value;
+    walk.directory(path, gitignore ? GitIgnore::for_directory(path) : GitIgnore{});
     std::sort(walk.found.begin(), walk.found.end());
     if (walk.found.empty()) out.without_assets.push_back(path);
     out.files.insert(out.files.end(), walk.found.begin(), walk.found.end());

@@ -2,8 +2,11 @@
 // Which files a run checks, from the paths named on the command line.
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include "config/file_selection.h"
 
 namespace assetlint {
 
@@ -25,10 +28,16 @@ struct PathExpansion {
 // to `cwd` when inside it.
 std::string spelled(const std::filesystem::path& path, const std::filesystem::path& cwd);
 
-// Files as given (spelled as above); directories searched recursively (hidden directories skipped) for
-// *.urdf, *.usda, text .usd files (a `#usda` header), *.mjcf and *.xml whose root is
-// <mujoco>. A directory or entry that cannot
-// be read is an error naming it; the rest of the walk goes on.
-PathExpansion expand_paths(const std::vector<std::string>& paths);
+// Which exclusions apply where: the file selection in effect for a path (its nearest
+// asset-lint.toml and the command line). Empty: the defaults (hidden entries excluded,
+// .gitignore respected).
+using SelectionFor = std::function<const config::FileSelection&(const std::string& path)>;
+
+// Files as given (spelled as above); directories searched recursively for *.urdf, *.usda,
+// text .usd files (a `#usda` header), *.mjcf and *.xml whose root is <mujoco>, leaving out what `exclude` names and, inside a
+// git work tree, what .gitignore files ignore. A named file (or directory) is left out
+// only with force_exclude. A directory or entry that cannot be read is an error naming
+// it; the rest of the walk goes on.
+PathExpansion expand_paths(const std::vector<std::string>& paths, const SelectionFor& selection_for = {});
 
 }  // namespace assetlint

@@ -31,6 +31,29 @@ std::vector<SuppressionComment> scan_xml(std::string_view text) {
     const std::size_t at = text.find(close, from);
     return at == std::string_view::npos ? n : at + close.size();
   };
+  // A comment after markup on its own line (`<limit .../>  <!-- asset-lint: ignore[x] -->`)
+  // covers the first element that starts on that line, or else the first that ends there,
+  // as ruff and clang-tidy users expect of an end-of-line comment.
+  auto trailing = [&](std::size_t comment_at, std::size_t suppression) {
+    std::size_t line_begin = comment_at;
+    while (line_begin > 0 && text[line_begin - 1] != '\n' && text[line_begin - 1] != '\r') --line_begin;
+    bool after_markup = false;
+    for (std::size_t i = line_begin; i < comment_at; ++i) after_markup = after_markup || !is_space(text[i]);
+    if (!after_markup) return false;
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      if (elements[e].begin >= line_begin && elements[e].begin < comment_at) {
+        waiting.emplace_back(suppression, e);
+        return true;
+      }
+    }
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      if (elements[e].end > line_begin && elements[e].end <= comment_at) {
+        waiting.emplace_back(suppression, e);
+        return true;
+      }
+    }
+    return false;
+  };
   while (p < n) {
     const std::size_t lt = text.find('<', p);
     const std::size_t stop = lt == std::string_view::npos ? n : lt;
@@ -55,7 +78,7 @@ std::vector<SuppressionComment> scan_xml(std::string_view text) {
         } else {
           s->target = "element";
           out.push_back(std::move(*s));
-          if (!out.back().problem) pending.push_back(out.size() - 1);
+          if (!out.back().problem && !trailing(lt, out.size() - 1)) pending.push_back(out.size() - 1);
         }
       }
       p = end;

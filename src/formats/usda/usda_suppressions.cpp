@@ -168,7 +168,27 @@ std::vector<SuppressionComment> scan_usda(std::string_view text) {
     } else {
       s->target = "statement";
       s->begin = s->end = t.end;
-      if (!s->problem) {
+      // After a statement on its line (`float x = 1  # asset-lint: ignore[r]`): that
+      // statement (or prim, after `def X {` or a prim's `}`), found by walking back over
+      // brackets to the line it starts on.
+      std::size_t start = i;
+      for (int depth = 0; start > 0;) {
+        const Token& back = tokens[start - 1];
+        if (back.kind == Tok::Newline && depth <= 0) break;
+        if (back.kind == Tok::Punct) {
+          const char c = text[back.begin];
+          if (c == ')' || c == ']' || c == '}') ++depth;
+          else if (c == '(' || c == '[' || c == '{') depth = std::max(0, depth - 1);  // `{` of `def X {  # …`
+        }
+        --start;
+      }
+      while (start < i && tokens[start].kind == Tok::Comment) ++start;
+      if (!s->problem && start < i && tokens[start].kind != Tok::Punct) {
+        bool prim = false;
+        s->begin = tokens[start].begin;
+        s->end = std::max(statement_end(start, prim), t.begin);
+        if (prim) s->target = "prim";
+      } else if (!s->problem) {
         std::size_t j = i + 1;
         while (j < tokens.size() && (tokens[j].kind == Tok::Newline || tokens[j].kind == Tok::Comment)) ++j;
         if (j < tokens.size() && !is_punct(tokens[j], '}') && !is_punct(tokens[j], ')') && !is_punct(tokens[j], ']')) {

@@ -1,0 +1,107 @@
+#include "report/settings_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "rules/registry.h"
+#include "util/numbers.h"
+
+namespace assetlint {
+namespace {
+
+std::string quoted_list(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += fmt::format("{}\"{}\"", out.empty() ? "" : ", ", item);
+  return "[" + out + "]";
+}
+
+void line(std::ostream& out, const std::string& assignment, const std::string& origin) {
+  out << fmt::format("{:<40} # {}\n", assignment, origin);
+}
+
+void number(std::ostream& out, const char* key, const std::optional<Configured<double>>& value, const char* unset) {
+  if (value) line(out, fmt::format("{} = {}", key, format_number(value->value)), value->origin);
+  else out << fmt::format("# {} is not set: {}\n", key, unset);
+}
+
+}  // namespace
+
+void write_settings(std::ostream& out, const std::string& file, const Settings& settings,
+                    const config::FileSelection& files, const std::string& checked_tree) {
+  out << fmt::format("# Settings for {}\n", file);
+  out << fmt::format("# configuration: {}\n", settings.config_path.empty() ? "none (defaults)" : settings.config_path);
+  out << fmt::format("# checked tree (USD composition reads inside it): {}\n\n", checked_tree);
+  const std::string config_origin = settings.config_path.empty() ? "default" : settings.config_path;
+  line(out, "select = " + quoted_list(settings.selection.select),
+       settings.selection.select.empty() ? "default: every rule" : "configuration or --select/--extend-select");
+  line(out, "ignore = " + quoted_list(settings.selection.ignore),
+       settings.selection.ignore.empty() ? "default: none" : "configuration or --ignore/--extend-ignore");
+  std::vector<std::string> off;
+  for (const RuleInfo* rule : rules::catalog())
+    if (!settings.selection.enabled(rule->id)) off.emplace_back(rule->id);
+  out << fmt::format("# rules that run: {} of {}{}\n", rules::catalog().size() - off.size(), rules::catalog().size(),
+                     off.empty() ? "" : fmt::format(" (not: {})", fmt::join(off, ", ")));
+  line(out, "exclude = " + [&] {
+    std::vector<std::string> globs;
+    for (const auto& p : files.exclude) globs.push_back(p.glob);
+    return quoted_list(globs);
+  }(), [&] {
+    std::vector<std::string> origins;
+    for (const auto& p : files.exclude) origins.push_back(p.origin);
+    return origins.empty() ? std::string("configuration") : fmt::format("{}", fmt::join(origins, ", "));
+  }());
+  line(out, fmt::format("respect-gitignore = {}", files.respect_gitignore.value ? "true" : "false"),
+       files.respect_gitignore.origin);
+
+  out << "\n[simulation]\n";
+  number(out, "timesteps_per_second", settings.simulation.timesteps_per_second,
+         "the stage's physxScene:timeStepsPerSecond, else PhysX's 60");
+  number(out, "position_iterations", settings.simulation.position_iterations,
+         "the articulation's own count, else PhysX's 32");
+  number(out, "velocity_iterations", settings.simulation.velocity_iterations, "PhysX's 1");
+  if (settings.simulation.solver)
+    line(out, fmt::format("solver = \"{}\"", settings.simulation.solver->value), settings.simulation.solver->origin);
+  else out << "# solver is not set: the stage's physxScene:solverType, else TGS\n";
+
+  const GripperSpec& g = settings.gripper;
+  out << "\n[gripper]\n";
+  number(out, "payload_kg", g.payload_kg, "no force derivation");
+  number(out, "friction", g.friction, "no force derivation");
+  number(out, "lever_arm_m", g.lever_arm_m, "no force derivation");
+  line(out, fmt::format("gravity = {}", format_number(g.gravity.value)), g.gravity.origin);
+  number(out, "finger_speed_m_s", g.finger_speed_m_s, "no velocity derivation");
+  number(out, "stroke_m", g.stroke_m, "no velocity derivation");
+  line(out, fmt::format("target_delta_deg = {}", format_number(g.target_delta_deg.value)), g.target_delta_deg.origin);
+  number(out, "torque_margin", g.torque_margin, "no rounding");
+  if (g.driven_joint) line(out, fmt::format("driven_joint = \"{}\"", g.driven_joint->value), g.driven_joint->origin);
+  else out << "# driven_joint is not set: the joint the mimics follow\n";
+
+  for (const auto& [joint, drive] : settings.drives) {
+    out << fmt::format("\n[drives.{}]  # {}\n", joint, drive.origin);
+    const std::pair<const char*, const std::optional<Configured<double>>*> values[] = {
+        {"stiffness", &drive.stiffness}, {"damping", &drive.damping},       {"armature", &drive.armature},
+        {"max_force", &drive.max_force}, {"rotor_inertia", &drive.rotor_inertia}, {"gear_ratio", &drive.gear_ratio}};
+    for (const auto& [key, value] : values)
+      if (*value) line(out, fmt::format("{} = {}", key, format_number((*value)->value)), (*value)->origin);
+    if (drive.type) line(out, fmt::format("type = \"{}\"", drive.type->value), drive.type->origin);
+  }
+
+  if (!settings.per_file_ignores.empty()) {
+    out << "\n[per-file-ignores]\n";
+    for (const auto& entry : settings.per_file_ignores)
+      line(out, fmt::format("\"{}\" = {}", entry.glob, quoted_list(entry.rules)), entry.origin);
+  }
+  for (const RuleInfo* rule : rules::catalog()) {
+    const auto severity = settings.severity_overrides.find(rule->id);
+    const auto options = settings.rule_options.find(rule->id);
+    if (severity == settings.severity_overrides.end() && options == settings.rule_options.end()) continue;
+    out << fmt::format("\n[rules.{}]\n", rule->id);
+    if (severity != settings.severity_overrides.end())
+      line(out, fmt::format("severity = \"{}\"", severity_name(severity->second)), config_origin);
+    if (options != settings.rule_options.end())
+      for (const auto& [name, value] : options->second)
+        line(out, fmt::format("{} = {}", name, format_number(value)), config_origin);
+  }
+}
+
+}  // namespace assetlint

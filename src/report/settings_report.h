@@ -1,0 +1,15 @@
+#pragma once
+// `asset-lint --show-settings FILE`: the settings a check of FILE uses, each value with where
+// it came from (a line of asset-lint.toml, a flag, or the default), written as TOML.
+#include <ostream>
+#include <string>
+
+#include "config/file_selection.h"
+#include "engine/settings.h"
+
+namespace assetlint {
+
+void write_settings(std::ostream& out, const std::string& file, const Settings& settings,
+                    const config::FileSelection& files, const std::string& checked_tree);
+
+}  // namespace assetlint
