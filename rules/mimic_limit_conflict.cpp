@@ -33,7 +33,7 @@ class MimicLimitConflict final : public Rule {
     std::vector<const Joint*> leaders_narrowed;  // one narrowing fix per leader
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !has_limits(joint)) continue;
-      const Joint* reference = asset.find_joint(joint.mimic->reference.text);
+      const Joint* reference = asset.followed_joint(joint);
       if (!reference || !has_limits(*reference)) continue;
       const double m = joint.mimic->multiplier.value;
       const double offset = joint.mimic->offset.value;

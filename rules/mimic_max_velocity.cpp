@@ -28,7 +28,7 @@ class MimicMaxVelocity final : public Rule {
       const Quantity& velocity = *joint.velocity;
       const bool usd = asset.format == SourceFormat::Usda;
       if (usd && velocity.authored >= kUsdDefaultMaxVelocityDeg) continue;
-      const Joint* reference = asset.find_joint(joint.mimic->reference.text);
+      const Joint* reference = asset.followed_joint(joint);
       const double gearing = std::fabs(joint.mimic->multiplier.value);
       const Quantity* reference_velocity =
           reference && is_single_dof(reference->type) && reference->velocity && reference->velocity->value > 0 ? &*reference->velocity : nullptr;

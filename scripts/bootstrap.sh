@@ -11,6 +11,8 @@ packages=(
   libmujoco-dev
   librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot
 )
+# Fuzzing (fuzz/README.md) needs clang and libclang-rt-14-dev; the suite itself only replays
+# the fuzz regressions with the project's compiler, so they are not installed here.
 
 # Optional tools some tests use when present (they warn and skip otherwise). Installing
 # them is best effort: a failure here never fails the bootstrap.
@@ -54,6 +56,18 @@ install_optional() {
     if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends pre-commit \
       || echo "bootstrap: warning: pre-commit not installed; its test will be skipped"
+  fi
+  # bench/run.sh only: hyperfine, GNU time (peak memory), check_urdf, valgrind (callgrind).
+  local bench_missing=()
+  for pkg in hyperfine time liburdfdom-tools valgrind; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || bench_missing+=("$pkg")
+  done
+  if [ ${#bench_missing[@]} -gt 0 ]; then
+    echo "bootstrap: (optional) installing ${bench_missing[*]} for bench/run.sh"
+    local sudo_bench=""
+    if [ "$(id -u)" -ne 0 ]; then sudo_bench="sudo"; fi
+    DEBIAN_FRONTEND=noninteractive $sudo_bench apt-get install -y -qq --no-install-recommends "${bench_missing[@]}" \
+      || echo "bootstrap: warning: ${bench_missing[*]} not installed; bench/run.sh needs them"
   fi
   local multitool="$root/tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool"
   if [ ! -x "$multitool" ] && command -v npm >/dev/null 2>&1; then

@@ -244,3 +244,20 @@ TEST_CASE("compose: layers are read through the given FileSystem (fixer overlay)
   Stage o = compose_stage(std::make_shared<const SourceFile>("r.usda", *base.read("r.usda", error)), overlay);
   CHECK(number(o, "/R", "x") == 42);
 }
+
+TEST_CASE("compose: internal reference and payload chains compose through every link", "[usd][compose]") {
+  // Regression (issue 10): the nested arcs of a chain shrank the cycle guard below its
+  // size (internal error: vector::_M_default_append).
+  const std::string references = "#usda 1.0\ndef \"A\" (references = </B>) {}\ndef \"B\" (references = </C>) {}\n"
+                                 "def \"C\" (references = </D>) {}\ndef \"D\" { float d = 4 }\n";
+  const std::string both = "#usda 1.0\ndef \"A\" (references = </B>\n payload = </B>) {}\n"
+                           "def \"B\" (references = </C>\n payload = </C>) {}\n"
+                           "def \"C\" (references = </D>\n payload = </D>) {}\ndef \"D\" { float d = 4 }\n";
+  for (const std::string& text : {references, both}) {
+    MemoryFileSystem fs({{"chain.usda", text}});
+    Stage s = compose(fs, "chain.usda");
+    INFO(text);
+    CHECK(s.diagnostics.empty());
+    for (const char* prim : {"/A", "/B", "/C", "/D"}) CHECK(number(s, prim, "d") == 4);
+  }
+}

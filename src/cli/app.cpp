@@ -21,6 +21,7 @@
 #include "commands/tune.h"
 #include "config/project_root.h"
 #include "config/resolver.h"
+#include "engine/file_system.h"
 #include "pipeline/discovery.h"
 #include "report/settings_report.h"
 
@@ -133,6 +134,7 @@ int run_check_command(const std::vector<std::string>& args, std::istream& in, st
     list_rules(out, options.format == "json");
     return kExitClean;
   }
+  set_disk_limits(ReadLimits{options.max_file_mib << 20});
   std::ofstream report_file;
   if (!options.output_file.empty()) {
     report_file.open(options.output_file, std::ios::binary | std::ios::trunc);

@@ -68,6 +68,9 @@ void add_options(CLI::App& app, Options& o) {
                  "the directory of its asset-lint.toml, else the directory named or the working directory)")
       ->check(CLI::ExistingDirectory);
   app.add_flag("--allow-outside-root", o.allow_outside_root, "Let USD composition read layers outside the checked tree");
+  app.add_option("--max-file-size", o.max_file_mib,
+                 "Files and layers larger than this many MiB are not read (an error names them; default 512)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 20));
   app.add_flag("--fix", o.fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", o.unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", o.diff, "Print a unified diff of what --fix would change; write nothing");

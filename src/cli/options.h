@@ -1,11 +1,13 @@
 #pragma once
 // The command line of `asset-lint [check]`: every option, parsed and checked.
+#include <cstdint>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "config/resolver.h"
+#include "engine/file_system.h"
 
 namespace assetlint::cli {
 
@@ -27,6 +29,7 @@ struct Options {
   bool exclude_given = false, no_respect_gitignore = false, force_exclude = false;
   std::string baseline, write_baseline;  // --baseline FILE, --write-baseline FILE
   bool allow_outside_root = false;
+  std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read
   std::string root;  // --root
   std::optional<double> timesteps_per_second;
   std::optional<unsigned> position_iterations;

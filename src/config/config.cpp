@@ -236,11 +236,14 @@ void extend(std::vector<std::string>& list, const std::vector<std::string>& more
   list.insert(list.end(), more.begin(), more.end());
 }
 
-std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path,
-                                FileSelectionConfig* files) {
+namespace {
+
+template <class Parse>
+std::optional<ConfigError> load_with(Parse parse, const std::string& path, Settings& settings,
+                                     const std::string& display_path, FileSelectionConfig* files) {
   Settings updated = settings;
   try {
-    toml::table root = toml::parse_file(path);
+    toml::table root = parse();
     std::error_code ec;
     const std::filesystem::path base = std::filesystem::absolute(path, ec).lexically_normal().parent_path();
     Loader(display_path.empty() ? path : display_path, updated, files, base).load(root);
@@ -254,6 +257,18 @@ std::optional<ConfigError> load(const std::string& path, Settings& settings, con
   updated.config_path = path;
   settings = std::move(updated);
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path,
+                                FileSelectionConfig* files) {
+  return load_with([&] { return toml::parse_file(path); }, path, settings, display_path, files);
+}
+
+std::optional<ConfigError> load_text(std::string_view text, const std::string& path, Settings& settings,
+                                     const std::string& display_path) {
+  return load_with([&] { return toml::parse(text, path); }, path, settings, display_path, nullptr);
 }
 
 std::filesystem::path discover(const std::filesystem::path& file) {

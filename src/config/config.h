@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "config/file_selection.h"
@@ -28,6 +29,10 @@ std::optional<ConfigError> load(const std::string& path, Settings& settings, con
 // Adds `more` to a select or ignore list. Extending an empty select list (every rule)
 // keeps every rule: it becomes `*` plus `more`.
 void extend(std::vector<std::string>& list, const std::vector<std::string>& more, bool is_select);
+
+// The same for configuration text already in memory; `path` names it in errors.
+std::optional<ConfigError> load_text(std::string_view text, const std::string& path, Settings& settings,
+                                     const std::string& display_path = "");
 
 // The nearest asset-lint.toml in the file's directory or an ancestor; empty if none.
 std::filesystem::path discover(const std::filesystem::path& file);

@@ -3,15 +3,56 @@
 namespace assetlint {
 
 const Link* Asset::find_link(std::string_view name) const {
+  if (indexed()) {
+    auto it = index_->links.find(name);
+    return it == index_->links.end() ? nullptr : &links[it->second];
+  }
   for (const auto& link : links)
     if (link.name.text == name) return &link;
   return nullptr;
 }
 
 const Joint* Asset::find_joint(std::string_view name) const {
+  if (indexed()) {
+    auto it = index_->joints.find(name);
+    return it == index_->joints.end() ? nullptr : &joints[it->second];
+  }
   for (const auto& joint : joints)
     if (joint.name.text == name) return &joint;
   return nullptr;
+}
+
+std::vector<const Joint*> Asset::mimic_followers(std::string_view name) const {
+  std::vector<const Joint*> out;
+  if (indexed()) {
+    if (auto it = index_->followers.find(name); it != index_->followers.end())
+      for (std::size_t i : it->second) out.push_back(&joints[i]);
+    return out;
+  }
+  for (const auto& joint : joints)
+    if (joint.mimic && joint.mimic->reference.text == name) out.push_back(&joint);
+  return out;
+}
+
+const Joint* Asset::followed_joint(const Joint& mimic) const {
+  if (!mimic.mimic || !is_single_dof(mimic.type) || mimic.mimic->reference.text == mimic.name.text) return nullptr;
+  const Joint* reference = find_joint(mimic.mimic->reference.text);
+  if (!reference || reference == &mimic || reference->is_mimic() || !is_single_dof(reference->type)) return nullptr;
+  return reference;
+}
+
+void Asset::index_names() {
+  auto index = std::make_shared<NameIndex>();
+  index->link_count = links.size();
+  index->joint_count = joints.size();
+  index->links.reserve(links.size());
+  index->joints.reserve(joints.size());
+  for (std::size_t i = 0; i < links.size(); ++i) index->links.emplace(links[i].name.text, i);
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    index->joints.emplace(joints[i].name.text, i);
+    if (joints[i].mimic) index->followers[joints[i].mimic->reference.text].push_back(i);
+  }
+  index_ = std::move(index);
 }
 
 std::string_view joint_type_name(JointType type) {

@@ -7,12 +7,20 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "model/quantity.h"
 #include "model/source.h"
 
 namespace assetlint {
+
+// Lets unordered maps keyed by std::string be searched with a std::string_view.
+struct TransparentHash {
+  using is_transparent = void;
+  std::size_t operator()(std::string_view text) const { return std::hash<std::string_view>{}(text); }
+};
 
 enum class SourceFormat { Urdf, Usda, Mjcf };
 
@@ -143,9 +151,29 @@ struct Asset {
   std::vector<Joint> joints;
   Scene scene;
 
+  // Lookups by name: through the index once index_names() has run on the current links
+  // and joints, a linear scan otherwise (assets built by hand in tests). The first
+  // definition wins when a name repeats.
   const Link* find_link(std::string_view name) const;
   const Joint* find_joint(std::string_view name) const;
+  // The joints whose mimic names `name`, in document order.
+  std::vector<const Joint*> mimic_followers(std::string_view name) const;
+  // The joint a mimic follows when structure-mimic-reference accepts the pair (defined,
+  // not itself, not a mimic, both single-DOF); nullptr otherwise, and for non-mimics.
+  // Rules derive values and fixes only through an accepted pair.
+  const Joint* followed_joint(const Joint& mimic) const;
+  // Builds the name index; call again after adding, removing or renaming links or joints.
+  void index_names();
   const SourceFile& source(FileId id) const { return *sources.at(id); }
+
+ private:
+  struct NameIndex {
+    std::size_t link_count = 0, joint_count = 0;
+    std::unordered_map<std::string, std::size_t, TransparentHash, std::equal_to<>> links, joints;
+    std::unordered_map<std::string, std::vector<std::size_t>, TransparentHash, std::equal_to<>> followers;
+  };
+  bool indexed() const { return index_ && index_->link_count == links.size() && index_->joint_count == joints.size(); }
+  std::shared_ptr<const NameIndex> index_;
 };
 
 std::string_view joint_type_name(JointType type);

@@ -24,8 +24,8 @@ std::vector<const Joint*> coupled_joints(const Asset& asset, const Joint& joint)
     if (const Joint* reference = asset.find_joint(joint.mimic->reference.text)) driver = reference;
   }
   std::vector<const Joint*> set{driver};
-  for (const Joint& other : asset.joints)
-    if (other.mimic && &other != driver && other.mimic->reference.text == driver->name.text) set.push_back(&other);
+  for (const Joint* other : asset.mimic_followers(driver->name.text))
+    if (other != driver) set.push_back(other);
   return set;
 }
 

@@ -65,6 +65,7 @@ class Reader {
         for (const XMLElement* c : sources_.children(el)) read_actuator(c, defaults_, compiler_, values_, result_.asset);
       }
     }
+    result_.asset.index_names();  // after the equalities: they make the mimics
     return std::move(result_);
   }
 

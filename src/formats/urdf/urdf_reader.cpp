@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "formats/urdf/urdfdom_check.h"
+#include "formats/urdf/urdfdom_verdict.h"
 #include "formats/xml/xml_document.h"
 #include "rules/reader_rules.h"
 #include "util/numbers.h"
@@ -36,7 +37,7 @@ class UrdfReader {
                   fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot->Name()));
       return fail();
     }
-    if (find_xacro(robot)) return fail();
+    if (may_hold_xacro(doc_->document()) && find_xacro(robot)) return fail();
 
     result_.asset.robot_name = name_of(robot);
     result_.asset.robot_span = element_span(robot);
@@ -45,6 +46,8 @@ class UrdfReader {
       if (tag == "link") read_link(el);
       else if (tag == "joint") read_joint(el);
     }
+    result_.asset.index_names();
+    if (!urdfdom_needed(robot)) return std::move(result_);
     check_with_urdfdom(doc_->document());
     return std::move(result_);
   }
@@ -109,6 +112,14 @@ class UrdfReader {
                           .toRotationMatrix();
     }
     return pose;
+  }
+
+  // Whether find_xacro has anything to find: a walk over every attribute of a large file
+  // costs more than searching its bytes (entities could spell "${", so '&' counts too).
+  static bool may_hold_xacro(std::string_view document) {
+    for (std::string_view marker : {"<xacro:", "${", "$(", "&"})
+      if (document.find(marker) != std::string_view::npos) return true;
+    return false;
   }
 
   bool find_xacro(const XMLElement* el) {
@@ -248,6 +259,14 @@ class UrdfReader {
     joint.motor = Motor{*rotor, gear, fmt::format("<drake:rotor_inertia> and <drake:gear_ratio> at line {}", rotor->span.line)};
   }
 
+  // urdfdom runs unless its verdict is certainly "accepted" (src/formats/urdf/urdfdom_verdict.h):
+  // then it would add nothing.
+  bool urdfdom_needed(const XMLElement* robot) const {
+    if (!doc_->errors().empty() || !doc_->positions_known()) return true;
+    const RawAttribute raw = [this](const XMLElement* el, std::string_view attr) { return doc_->raw_value(el, attr); };
+    return !urdfdom_certainly_accepts(doc_->document(), robot, raw);
+  }
+
   // Runs urdfdom and reports its complaints as one finding: the first is the cause, the rest
   // (urdfdom's cascade, e.g. "Could not parse collision element" after an unknown geometry)
   // become located notes.
@@ -256,8 +275,15 @@ class UrdfReader {
     // urdfdom's generic epilogue says nothing the specific messages before it do not.
     if (messages.size() > 1) std::erase(messages, std::string("joint xml is not initialized correctly"));
     // An undefined link is structure-undefined-link's finding, which says that urdfdom rejects it.
-    std::erase_if(messages, [](const std::string& m) {
-      return m.starts_with("Failed to build tree: parent link [") || m.starts_with("Failed to build tree: child link [");
+    // Only where asset-lint misses the link too: urdfdom does not trim names, so "palm " is
+    // undefined to it but not to us, and then urdfdom's message is the only finding.
+    std::erase_if(messages, [this](const std::string& m) {
+      if (!m.starts_with("Failed to build tree: parent link [") && !m.starts_with("Failed to build tree: child link ["))
+        return false;
+      const std::size_t open = m.find('['), close = m.find(']', open);
+      if (close == std::string::npos) return false;
+      const std::string name = m.substr(open + 1, close - open - 1);
+      return trim(name) == name && !result_.asset.find_link(name);
     });
     std::vector<std::pair<Span, std::string>> located;
     for (const auto& message : messages) {

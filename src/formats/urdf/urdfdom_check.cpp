@@ -3,6 +3,7 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <atomic>
 #include <mutex>
 
 namespace assetlint::urdf {
@@ -18,16 +19,26 @@ class CollectingHandler : public console_bridge::OutputHandler {
 
 // console_bridge's output handler is process-wide, so urdfdom runs one file at a time.
 std::mutex urdfdom_mutex;
+std::atomic<std::size_t> runs{0};
 
 }  // namespace
 
 std::vector<std::string> urdfdom_errors(std::string_view document) {
   std::lock_guard lock(urdfdom_mutex);
+  ++runs;
   CollectingHandler handler;
   console_bridge::useOutputHandler(&handler);
   bool accepted = false;
   try {
-    accepted = ::urdf::parseURDF(std::string(document)) != nullptr;
+    const ::urdf::ModelInterfaceSharedPtr model = ::urdf::parseURDF(std::string(document));
+    accepted = model != nullptr;
+    // A model urdfdom accepts can still hold a joint cycle beside its tree; links then own
+    // each other through child_links and would never be freed.
+    if (model)
+      for (auto& [name, link] : model->links_) {
+        link->child_links.clear();
+        link->child_joints.clear();
+      }
   } catch (const std::exception& error) {
     handler.messages.push_back(error.what());
   }
@@ -36,5 +47,7 @@ std::vector<std::string> urdfdom_errors(std::string_view document) {
   if (handler.messages.empty()) handler.messages.push_back("urdfdom rejected the model");
   return std::move(handler.messages);
 }
+
+std::size_t urdfdom_runs() { return runs.load(); }
 
 }  // namespace assetlint::urdf

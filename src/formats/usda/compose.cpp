@@ -298,9 +298,10 @@ class Composer {
                               path, target_path, a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset)));
         continue;
       }
+      const std::size_t before = active.size();
       for (const SpecRef& t : targets) active.push_back(t.prim);
-      expand(targets, path, active);
-      active.resize(active.size() - targets.size());
+      expand(targets, path, active);  // appends the targets' own arcs to `targets`
+      active.resize(before);
       added.insert(added.end(), targets.begin(), targets.end());
     }
     specs.insert(specs.end(), added.begin(), added.end());
@@ -310,20 +311,20 @@ class Composer {
                                          std::size_t parent, std::vector<const Prim*>& active, std::size_t depth) {
     std::vector<std::size_t> out;
     if (depth > 400) return out;
+    // The specs of each child name, strongest first, names in first-seen order: one pass
+    // over the containers (a scope with many children stays linear).
     std::vector<std::string_view> names;
-    std::unordered_set<std::string_view> seen;
+    std::unordered_map<std::string_view, std::vector<SpecRef>> specs_of;
     for (const Container& c : containers)
-      for (const Prim& p : *c.prims)
-        if (seen.insert(p.name).second) names.push_back(p.name);
+      for (const Prim& p : *c.prims) {
+        auto [it, fresh] = specs_of.try_emplace(p.name);
+        if (fresh) names.push_back(p.name);
+        SpecRef s = c.spec;
+        s.prim = &p;
+        it->second.push_back(std::move(s));
+      }
     for (std::string_view name : names) {
-      std::vector<SpecRef> specs;
-      for (const Container& c : containers)
-        for (const Prim& p : *c.prims)
-          if (p.name == name) {
-            SpecRef s = c.spec;
-            s.prim = &p;
-            specs.push_back(std::move(s));
-          }
+      std::vector<SpecRef> specs = std::move(specs_of[name]);
       const std::string path = parent_path + "/" + std::string(name);
       if (stage_.index.count(path)) continue;
       const std::size_t before = active.size();

@@ -95,6 +95,7 @@ class Reader {
           scene.velocity_iterations = number(prim, "physxArticulation:solverVelocityIterationCount", Unit::None);
       }
     }
+    result_.asset.index_names();
     for (Joint& joint : result_.asset.joints) {
       if (!joint.mimic) continue;
       const Joint* reference = result_.asset.find_joint(joint.mimic->reference.text);

@@ -53,6 +53,12 @@ const XmlAttributeSpan* XmlDocument::attribute(const XMLElement* el, std::string
   return it == tags_.end() ? nullptr : it->second->attribute(attr);
 }
 
+std::optional<std::string_view> XmlDocument::raw_value(const XMLElement* el, std::string_view attr) const {
+  const XmlAttributeSpan* a = attribute(el, attr);
+  if (!a) return std::nullopt;
+  return file_.view().substr(a->value_offset, a->value_length);
+}
+
 Span XmlDocument::element_span(const XMLElement* el) const {
   if (!el) return file_.span(id_, scan_.document_begin, 0);
   if (auto it = tags_.find(el); it != tags_.end())

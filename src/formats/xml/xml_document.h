@@ -4,6 +4,7 @@
 #include <tinyxml2.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -32,6 +33,12 @@ class XmlDocument {
   const XmlScan& scan() const { return scan_; }
   const SourceFile& file() const { return file_; }
   FileId id() const { return id_; }
+
+  // Whether every element's byte positions are known (the scanner and tinyxml2 agree).
+  bool positions_known() const { return !tags_.empty(); }
+  // An attribute's value exactly as written, before entity expansion and whitespace
+  // collapsing; nullopt when absent or when positions are unknown.
+  std::optional<std::string_view> raw_value(const tinyxml2::XMLElement* el, std::string_view attr) const;
 
   // The start tag of an element (its line start when positions are unknown).
   Span element_span(const tinyxml2::XMLElement* el) const;

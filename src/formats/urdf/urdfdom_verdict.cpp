@@ -1,0 +1,216 @@
+#include "formats/urdf/urdfdom_verdict.h"
+
+#include <tinyxml2.h>
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <unordered_set>
+
+namespace assetlint::urdf {
+namespace {
+
+using tinyxml2::XMLElement;
+
+// `<?xml version="1.0" encoding="UTF-8" standalone="yes"?>` with attributes among these
+// three, double-quoted, separated by single spaces: the declarations both parsers agree on.
+bool plain_declaration(std::string_view text) {
+  if (!text.starts_with("<?xml")) return false;
+  std::size_t i = 5;
+  for (;;) {
+    if (text.compare(i, 2, "?>") == 0) return true;
+    if (i >= text.size() || text[i] != ' ') return false;
+    ++i;
+    if (text.compare(i, 2, "?>") == 0) return true;
+    std::size_t name_end = text.find('=', i);
+    if (name_end == std::string_view::npos) return false;
+    const std::string_view name = text.substr(i, name_end - i);
+    if (name != "version" && name != "encoding" && name != "standalone") return false;
+    i = name_end + 1;
+    if (i >= text.size() || text[i] != '"') return false;
+    const std::size_t close = text.find('"', i + 1);
+    if (close == std::string_view::npos) return false;
+    for (std::size_t k = i + 1; k < close; ++k) {
+      const char c = text[k];
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') return false;
+    }
+    i = close + 1;
+  }
+}
+
+// Bytes both XML parsers read the same way: printable ASCII and line breaks, no entity
+// references, no DOCTYPE or CDATA, no processing instruction but a leading declaration.
+bool plain_markup(std::string_view document) {
+  // 0: ordinary, 1: never plain, 2: '<' (look at what follows).
+  static const auto kinds = [] {
+    std::array<unsigned char, 256> k{};
+    for (int c = 0; c < 256; ++c) k[c] = (c >= 0x80 || c == '&' || (c < 0x20 && c != '\t' && c != '\n' && c != '\r')) ? 1 : 0;
+    k['<'] = 2;
+    return k;
+  }();
+  const std::size_t first = document.find_first_not_of(" \t\r\n");
+  for (std::size_t i = 0; i < document.size(); ++i) {
+    const unsigned char kind = kinds[static_cast<unsigned char>(document[i])];
+    if (kind == 0) continue;
+    if (kind == 1) return false;
+    if (i + 1 >= document.size()) continue;
+    if (document[i + 1] == '!' && document.compare(i, 4, "<!--") != 0) return false;
+    if (document[i + 1] == '?' && !(i == first && plain_declaration(document.substr(i)))) return false;
+  }
+  return true;
+}
+
+bool has_control(std::string_view value) {
+  for (char c : value)
+    if (static_cast<unsigned char>(c) < 0x20) return true;
+  return false;
+}
+
+// urdfdom's strToDouble reads with a classic-locale stringstream and needs all of it
+// consumed: this accepts the plain decimal subset of that, finite and not denormal.
+bool plain_number(std::string_view text) {
+  std::size_t i = 0;
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    return i - start;
+  };
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  std::size_t mantissa = digits();
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    mantissa += digits();  // "1." reads as 1
+  }
+  if (mantissa == 0) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  if (i != text.size()) return false;
+  // from_chars takes no leading '+'; overflow and underflow come back as out of range.
+  const std::size_t skip = text[0] == '+' ? 1 : 0;
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data() + skip, text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value) &&
+         (value == 0 || std::fabs(value) >= 1e-300);
+}
+
+// urdfdom's Vector3::init: pieces split at spaces, empty ones skipped, exactly three.
+bool plain_vector(std::string_view text) {
+  int count = 0;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t end = std::min(text.find(' ', pos), text.size());
+    const std::string_view piece = text.substr(pos, end - pos);
+    if (!piece.empty()) {
+      if (!plain_number(piece)) return false;
+      ++count;
+    }
+    pos = end + 1;
+  }
+  return count == 3;
+}
+
+class Verdict {
+ public:
+  explicit Verdict(const RawAttribute& raw) : raw_(raw) {}
+
+  bool accepts(const XMLElement* robot) {
+    if (!robot || std::string_view(robot->Name()) != "robot") return false;
+    if (!value(robot, "name")) return false;
+    if (auto version = value(robot, "version"); version && *version != "1.0") return false;
+
+    std::unordered_set<std::string_view> materials;
+    for (const XMLElement* m = robot->FirstChildElement("material"); m; m = m->NextSiblingElement("material"))
+      if (!materials.insert(value(m, "name").value_or("")).second) return false;
+
+    std::unordered_set<std::string_view> links;
+    for (const XMLElement* l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link"))
+      if (!links.insert(value(l, "name").value_or("")).second) return false;
+    if (links.empty()) return false;
+
+    std::unordered_set<std::string_view> joints, children;
+    for (const XMLElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+      auto name = value(j, "name");
+      if (!name || !joints.insert(*name).second || !joint_parses(j)) return false;
+      const auto parent = link_of(j, "parent"), child = link_of(j, "child");
+      if (parent.empty() || child.empty() || !links.count(parent) || !links.count(child)) return false;
+      children.insert(child);
+    }
+    // initRoot: exactly one link that is no joint's child.
+    std::size_t roots = 0;
+    for (std::string_view link : links) roots += children.count(link) ? 0 : 1;
+    return roots == 1 && clean_;
+  }
+
+ private:
+  std::optional<std::string_view> value(const XMLElement* el, std::string_view attr) {
+    auto v = raw_(el, attr);
+    if (v && has_control(*v)) clean_ = false;
+    return v;
+  }
+  bool number_if_present(const XMLElement* el, std::string_view attr) {
+    auto v = value(el, attr);
+    return !v || plain_number(*v);
+  }
+  bool number(const XMLElement* el, std::string_view attr) {
+    auto v = value(el, attr);
+    return v && plain_number(*v);
+  }
+  bool vector_if_present(const XMLElement* el, std::string_view attr) {
+    auto v = value(el, attr);
+    return !v || plain_vector(*v);
+  }
+  std::string_view link_of(const XMLElement* joint, const char* tag) {
+    const XMLElement* el = joint->FirstChildElement(tag);
+    return el ? value(el, "link").value_or("") : std::string_view();
+  }
+
+  // urdfdom's parseJoint returns true.
+  bool joint_parses(const XMLElement* j) {
+    if (const XMLElement* origin = j->FirstChildElement("origin"))
+      if (!vector_if_present(origin, "xyz") || !vector_if_present(origin, "rpy")) return false;
+    auto type = value(j, "type");
+    if (!type) return false;
+    const bool moving = *type == "revolute" || *type == "continuous" || *type == "prismatic" || *type == "planar";
+    if (!moving && *type != "fixed" && *type != "floating") return false;
+    if (const XMLElement* axis = j->FirstChildElement("axis"); axis && moving)
+      if (!vector_if_present(axis, "xyz")) return false;
+    if (const XMLElement* limit = j->FirstChildElement("limit")) {
+      if (!number_if_present(limit, "lower") || !number_if_present(limit, "upper") || !number(limit, "effort") ||
+          !number(limit, "velocity"))
+        return false;
+    } else if (*type == "revolute" || *type == "prismatic") {
+      return false;
+    }
+    if (const XMLElement* safety = j->FirstChildElement("safety_controller"))
+      if (!number_if_present(safety, "soft_lower_limit") || !number_if_present(safety, "soft_upper_limit") ||
+          !number_if_present(safety, "k_position") || !number(safety, "k_velocity"))
+        return false;
+    if (const XMLElement* calibration = j->FirstChildElement("calibration"))
+      if (!number_if_present(calibration, "rising") || !number_if_present(calibration, "falling")) return false;
+    if (const XMLElement* mimic = j->FirstChildElement("mimic"))
+      if (!value(mimic, "joint") || !number_if_present(mimic, "multiplier") || !number_if_present(mimic, "offset"))
+        return false;
+    if (const XMLElement* dynamics = j->FirstChildElement("dynamics")) {
+      if (!number_if_present(dynamics, "damping") || !number_if_present(dynamics, "friction")) return false;
+      if (!value(dynamics, "damping") && !value(dynamics, "friction")) return false;
+    }
+    return true;
+  }
+
+  const RawAttribute& raw_;
+  bool clean_ = true;  // every attribute value read is free of control characters
+};
+
+}  // namespace
+
+bool urdfdom_certainly_accepts(std::string_view document, const XMLElement* robot, const RawAttribute& raw) {
+  if (!plain_markup(document)) return false;
+  return Verdict(raw).accepts(robot);
+}
+
+}  // namespace assetlint::urdf

@@ -1,0 +1,162 @@
+// Hostile and accidental input (issue 10): each gives a clear error or diagnostic in
+// bounded time and memory, and the other files of the run are still checked.
+#include <catch2/catch.hpp>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "engine/file_system.h"
+#include "pipeline/lint.h"
+#include "test_support.h"
+
+using namespace assetlint;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kValidUrdf = R"(<?xml version="1.0"?>
+<robot name="ok">
+  <link name="base"/>
+</robot>
+)";
+
+std::string read_error(const FileSystem& files, const std::string& path) {
+  std::string error;
+  const auto text = files.read(path, error);
+  CHECK_FALSE(text);
+  return error;
+}
+
+std::string rules_of(const FileReport& report) {
+  std::string out;
+  for (const auto& d : report.diagnostics) out += d.rule + " ";
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("hostile: the disk reader refuses FIFOs, devices and directories without blocking", "[hostile]") {
+  test::TempDir dir;
+  const fs::path fifo = dir.path() / "pipe.urdf";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const DiskFileSystem files;
+  CHECK(read_error(files, fifo.string()) == "is a FIFO, not a regular file");
+  CHECK(read_error(files, "/dev/zero") == "is a character device, not a regular file");
+  CHECK(read_error(files, dir.path().string()) == "is a directory");
+  CHECK(read_error(files, (dir.path() / "missing.urdf").string()) == "No such file or directory");
+}
+
+TEST_CASE("hostile: a file over the size limit is refused before it is read", "[hostile]") {
+  test::TempDir dir;
+  // A sparse 1 GiB file: refused from its size alone, nothing is allocated.
+  const fs::path huge = dir.path() / "huge.urdf";
+  {
+    const int fd = ::open(huge.c_str(), O_CREAT | O_WRONLY, 0600);
+    REQUIRE(fd >= 0);
+    REQUIRE(::ftruncate(fd, 1ll << 30) == 0);
+    ::close(fd);
+  }
+  const DiskFileSystem files;
+  CHECK(read_error(files, huge.string()) == "is 1024 MiB, over the 512 MiB limit (--max-file-size)");
+  // A configured limit applies the same way.
+  test::write_file(dir.path() / "small.urdf", std::string(3 << 20, '<'));
+  const DiskFileSystem strict(ReadLimits{1 << 20});
+  CHECK(read_error(strict, (dir.path() / "small.urdf").string()) == "is 3 MiB, over the 1 MiB limit (--max-file-size)");
+  std::string error;
+  CHECK(files.read((dir.path() / "small.urdf").string(), error)->size() == (3u << 20));
+}
+
+TEST_CASE("hostile: the other files of a run are still checked", "[hostile]") {
+  test::TempDir dir;
+  const fs::path fifo = dir.path() / "pipe.urdf";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  test::write_file(dir.path() / "ok.urdf", kValidUrdf);
+  const auto reports = lint_files({fifo.string(), (dir.path() / "gone.urdf").string(), (dir.path() / "ok.urdf").string()},
+                                  Settings{}, 1);
+  REQUIRE(reports.size() == 3);
+  CHECK(reports[0].error == "cannot read '" + fifo.string() + "': is a FIFO, not a regular file");
+  CHECK(reports[1].error == "cannot read '" + (dir.path() / "gone.urdf").string() + "': No such file or directory");
+  CHECK_FALSE(reports[2].error);
+}
+
+TEST_CASE("hostile: deep nesting, markup floods, binary garbage and invalid UTF-8 are parse errors", "[hostile]") {
+  std::string deep_urdf = "<?xml version=\"1.0\"?>\n<robot name=\"r\">";
+  for (int i = 0; i < 100000; ++i) deep_urdf += "<a>";
+  std::string deep_usda = "#usda 1.0\n";
+  for (int i = 0; i < 100000; ++i) deep_usda += "def \"a\" {\n";
+  std::string garbage;
+  for (int i = 0; i < 4096; ++i) garbage.push_back(static_cast<char>((i * 7919 + 13) % 256));
+  const struct {
+    const char* path;
+    std::string text;
+  } cases[] = {
+      {"deep.urdf", deep_urdf},
+      {"deep.usda", deep_usda},
+      {"flood.urdf", std::string(8 << 20, '<')},
+      {"flood.usda", "#usda 1.0\n(x = " + std::string(8 << 20, '[')},
+      {"garbage.urdf", garbage},
+      {"garbage.usda", "#usda 1.0\n" + garbage},
+  };
+  for (const auto& c : cases) {
+    INFO(c.path);
+    const FileReport report = lint_text(c.path, c.text, Settings{});
+    CHECK_FALSE(report.error);
+    CHECK(rules_of(report).find("parse-error") != std::string::npos);
+  }
+}
+
+TEST_CASE("hostile: invalid UTF-8 in names is reported in every output format", "[hostile]") {
+  test::TempDir dir;
+  test::write_file(dir.path() / "bytes.urdf",
+                   "<?xml version=\"1.0\"?>\n<robot name=\"r\">\n  <link name=\"a\xff\xfe\"/>\n"
+                   "  <joint name=\"j\xc3\" type=\"revolute\"><parent link=\"a\xff\xfe\"/><child link=\"b\xe2\x82\"/>"
+                   "<limit lower=\"0\" upper=\"90\" effort=\"1\" velocity=\"1\"/></joint>\n</robot>\n");
+  for (const char* format : {"text", "concise", "json", "sarif", "github", "junit"}) {
+    INFO(format);
+    const auto r = test::run_cli({"--output-format", format, "bytes.urdf"}, dir.path());
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.empty());
+  }
+}
+
+TEST_CASE("hostile: a layer cycle and layers that are devices or FIFOs are notes, not hangs", "[hostile]") {
+  test::TempDir dir;
+  REQUIRE(::mkfifo((dir.path() / "pipe.usda").c_str(), 0600) == 0);
+  test::write_file(dir.path() / "a.usda", "#usda 1.0\n(\n subLayers = [@b.usda@, @pipe.usda@, @/dev/zero@]\n)\n");
+  test::write_file(dir.path() / "b.usda", "#usda 1.0\n(\n subLayers = [@a.usda@]\n)\n");
+  const auto r = test::run_cli({"--allow-outside-root", "a.usda"}, dir.path());
+  INFO(r.out << r.err);
+  CHECK(r.err.empty());
+  CHECK(r.out.find("sublayer cycle") != std::string::npos);
+  CHECK(r.out.find("layer 'pipe.usda' cannot be read (is a FIFO, not a regular file); skipped") != std::string::npos);
+  CHECK(r.out.find("layer '/dev/zero' cannot be read (is a character device, not a regular file); skipped") !=
+        std::string::npos);
+}
+
+TEST_CASE("hostile: a symlink loop in a checked directory does not stop the walk", "[hostile]") {
+  test::TempDir dir;
+  fs::create_directories(dir.path() / "robots");
+  fs::create_symlink("loop", dir.path() / "robots" / "loop");           // links to itself
+  fs::create_symlink(".", dir.path() / "robots" / "again");             // a directory cycle
+  fs::create_symlink("a.urdf", dir.path() / "robots" / "a_loop.urdf");  // dangling
+  test::write_file(dir.path() / "robots" / "z.urdf", kValidUrdf);
+  const auto r = test::run_cli({"robots"}, dir.path());
+  INFO(r.out << r.err);
+  // The looping link is named (exit 2); the walk goes on and checks z.urdf.
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("robots/loop") != std::string::npos);
+  CHECK(r.out.find("1 file") != std::string::npos);
+}
+
+TEST_CASE("hostile: --max-file-size names the file and the others are still checked", "[hostile]") {
+  test::TempDir dir;
+  test::write_file(dir.path() / "big.urdf", std::string((2 << 20) + 1, '<'));
+  test::write_file(dir.path() / "ok.urdf", kValidUrdf);
+  const auto r = test::run_cli({"--max-file-size", "2", "big.urdf", "ok.urdf"}, dir.path());
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("is 2.0 MiB (2097153 bytes), over the 2 MiB limit (--max-file-size)") != std::string::npos);
+  CHECK(r.out.find("1 file") != std::string::npos);
+}
