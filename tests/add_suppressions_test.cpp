@@ -5,14 +5,13 @@
 #include "test_support.h"
 
 using assetlint::test::read_file;
+using assetlint::test::report_dir;
 using assetlint::test::replace_once;
 using assetlint::test::run_cli;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
 
 namespace {
-
-std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
 
 // Runs --add-suppressions twice on `name`; returns the text after the first run and checks
 // that the second changes nothing and the check is then clean.

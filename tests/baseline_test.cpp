@@ -5,14 +5,13 @@
 #include "test_support.h"
 
 using assetlint::test::read_file;
+using assetlint::test::report_dir;
 using assetlint::test::replace_once;
 using assetlint::test::run_cli;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
 
 namespace {
-
-std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
 
 const std::string kSelect = "limits-inverted,mimic-max-velocity,stale-schema-attribute";
 

@@ -8,13 +8,12 @@
 #include "test_support.h"
 
 using assetlint::test::read_file;
+using assetlint::test::report_dir;
 using assetlint::test::run_cli;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
 
 namespace {
-
-std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
 
 // A joint name holding a line break and a GitHub workflow command.
 const char* kInjectingUrdf =

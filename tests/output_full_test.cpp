@@ -7,13 +7,12 @@
 
 #include "test_support.h"
 
+using assetlint::test::report_dir;
 using assetlint::test::run_cli;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
 
 namespace {
-
-std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
 
 // Sets an environment variable for the scope (the CLI runs as a child process and inherits it).
 class ScopedEnv {

@@ -17,12 +17,11 @@
 #include "test_support.h"
 
 using assetlint::test::read_file;
+using assetlint::test::report_dir;
 using assetlint::test::run_cli;
 using assetlint::test::write_file;
 
 namespace {
-
-std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
 
 std::string replace_all(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))

@@ -7,13 +7,12 @@
 
 using assetlint::RuleSelection;
 using assetlint::test::read_file;
+using assetlint::test::report_dir;
 using assetlint::test::run_cli;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
 
 namespace {
-
-std::filesystem::path report_dir() { return assetlint::test::fixtures_dir() / "report"; }
 
 bool runs(std::vector<std::string> select, std::vector<std::string> ignore, const char* rule) {
   return RuleSelection{std::move(select), std::move(ignore)}.enabled(rule);

@@ -8,6 +8,8 @@ namespace assetlint::test {
 
 inline std::filesystem::path source_dir() { return ASSET_LINT_SOURCE_DIR; }
 inline std::filesystem::path fixtures_dir() { return source_dir() / "fixtures"; }
+// The report-format fixtures (gripper.urdf, joints.usda and their goldens).
+inline std::filesystem::path report_dir() { return fixtures_dir() / "report"; }
 // ../shared/corpus beside the repository; empty when it is absent.
 std::filesystem::path corpus_dir();
 
