@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "model/topology.h"
+#include "physics/articulation.h"
 #include "physics/inertia.h"
 #include "rules/all_rules.h"
 #include "rules/support.h"
@@ -111,13 +112,18 @@ class InertiaInvalid final : public Rule {
       double excess;  // how far outside its bound, as a factor
     };
     std::vector<Found> found;
+    const physics::Articulation articulation(asset);
+    const auto frames = physics::joint_frames_by_link(asset);
     for (const Link& link : asset.links) {
       const auto placed = where.find(&link);
       if (placed == where.end() || placed->second.role != Role::BodyStart || !link.inertial) continue;
       if (physics::pasted_tensor(link.inertial->inertia) ||
           std::find(already.begin(), already.end(), &link) != already.end())
         continue;
-      const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link));
+      const auto on_link = frames.find(link.name.text);
+      const auto g = physics::judge_gyration(*link.inertial,
+                                             on_link == frames.end() ? std::vector<Eigen::Vector3d>{} : on_link->second,
+                                             articulation.sole_rotation_axis(link));
       if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
       const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;
       found.push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest});
@@ -133,9 +139,10 @@ class InertiaInvalid final : public Rule {
         in.inertia_span, Severity::Warning,
         fmt::format("link '{}': radius of gyration {} m is {} than the link could be{}", short_path(worst.link->name.text),
                     format_number(worst.g.largest, 3), large ? "larger" : "smaller", more));
-    d.note(fmt::format("√(I/m) = √({} kg·m² / {} kg) = {} m, {} {}.",
+    d.note(fmt::format("√(I/m) = √({} kg·m² / {} kg) = {} m{}, {} {}.",
                        format_number(worst.g.largest * worst.g.largest * in.mass.value, 4),
                        format_number(in.mass.value, 4), format_number(worst.g.largest, 3),
+                       worst.g.about_axis ? " about the one axis the link turns about" : "",
                        large ? "above" : "under", worst.g.bound_text()));
     if (large)
       d.note("All of a body's mass lies within its extent R of the COM, so √(I/m) ≤ R: this tensor (or this mass) "

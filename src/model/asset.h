@@ -100,6 +100,17 @@ struct Motor {
   std::string origin;      // where it was declared, for messages
 };
 
+// Whether an actuator moves a joint. MJCF says so for every joint (an actuator's joint or
+// fixed-tendon transmission); URDF and USD do not, so their joints stay Unknown.
+enum class Actuation { Unknown, Actuated, Passive };
+
+// The actuator's transmission ratio where the asset declares one (MJCF actuator `gear`):
+// joint torque = ratio · actuator force, so an armature implies I_rotor = armature / ratio².
+struct Transmission {
+  double ratio = 1.0;
+  Span span;
+};
+
 struct Joint {
   Name name;
   Span span;               // the element or prim
@@ -123,6 +134,8 @@ struct Joint {
   OptQuantity joint_stiffness;  // MJCF passive spring toward springref: N·m/rad or N/m
   OptQuantity armature;    // kg·m² or kg
   std::optional<Motor> motor;
+  Actuation actuation = Actuation::Unknown;
+  std::optional<Transmission> transmission;
   std::optional<Drive> drive;
   // Values of a drive schema that is authored but not applied (USD `delete apiSchemas`):
   // PhysX ignores them, but they show what someone meant, e.g. gains copied elsewhere.

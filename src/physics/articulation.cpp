@@ -213,6 +213,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
     has_parent[static_cast<std::size_t>(b)] = true;
   }
   floating_.assign(bodies_.size(), false);
+  joint_into_.assign(bodies_.size(), -1);
   std::vector<bool> visited(bodies_.size(), false);
   std::vector<bool> used(edges.size(), false);
   const auto grow = [&](int root) {
@@ -254,6 +255,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
           tj.motion.tail<3>() = in_child.translation().cross(axis);
         }
         tree_index_.emplace(edge.joint, static_cast<int>(tree_.size()));
+        joint_into_[static_cast<std::size_t>(next)] = static_cast<int>(tree_.size());
         tree_.push_back(tj);
         pending.push_back(next);
       }
@@ -341,6 +343,17 @@ void Articulation::solve() {
     const Matrix6 project = Matrix6::Identity() - j.motion * u[k].transpose() / d[k];
     phi[c] = project * seen * project.transpose() + j.motion * j.motion.transpose() / d[k];
   }
+}
+
+std::optional<Eigen::Vector3d> Articulation::sole_rotation_axis(const Link& link) const {
+  const auto it = body_index_.find(link.name.text);
+  if (it == body_index_.end()) return std::nullopt;
+  const auto b = static_cast<std::size_t>(it->second);
+  if (bodies_[b].world || bodies_[b].links.empty() || bodies_[b].links.front() != &link || joint_into_[b] < 0)
+    return std::nullopt;
+  const TreeJoint& into = tree_[static_cast<std::size_t>(joint_into_[b])];
+  if (!is_angular(into.joint->type) || !bodies_[static_cast<std::size_t>(into.parent)].world) return std::nullopt;
+  return Eigen::Vector3d(into.motion.head<3>());
 }
 
 ArticulatedInertia Articulation::inertia(const Joint& joint) const {

@@ -79,6 +79,11 @@ class Articulation {
   // prismatic joints), when its mass properties are known.
   std::optional<double> inertia_about_axis(const Body& body, const Joint& joint, int which) const;
 
+  // The axis (in the link's frame) about which a link turns when that is all it can do: the
+  // first link of a body whose one joint is revolute or continuous to a body welded to the
+  // world (an arm's first link). Only its moment about that axis enters the dynamics.
+  std::optional<Eigen::Vector3d> sole_rotation_axis(const Link& link) const;
+
  private:
   void build(const Asset& asset, FreeRoot free_root);
   void solve();
@@ -87,6 +92,7 @@ class Articulation {
   std::vector<TreeJoint> tree_;                     // parents before children
   std::vector<int> roots_;                          // body indices, one per tree
   std::vector<bool> floating_;                      // per body: a floating root
+  std::vector<int> joint_into_;                     // per body: the tree_ entry whose child it is, or -1
   std::unordered_map<std::string_view, int> body_index_;  // link name → body
   std::unordered_map<const Joint*, int> tree_index_;      // joint → tree_ entry
   std::vector<ArticulatedInertia> results_;         // per tree_ entry

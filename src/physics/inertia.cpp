@@ -41,13 +41,28 @@ std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& lin
   return frames;
 }
 
-std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames) {
+std::unordered_map<std::string_view, std::vector<Eigen::Vector3d>> joint_frames_by_link(const Asset& asset) {
+  std::unordered_map<std::string_view, std::vector<Eigen::Vector3d>> frames;
+  for (const Joint& joint : asset.joints) {
+    frames[joint.parent.text].push_back(joint.frame_in_link[0].translation());
+    frames[joint.child.text].push_back(joint.frame_in_link[1].translation());
+  }
+  return frames;
+}
+
+std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames,
+                                       const std::optional<Eigen::Vector3d>& sole_axis) {
   const double mass = inertial.mass.value;
   if (!inertial.mass_authored || !inertial.inertia_authored || !inertial.com_authored || !(mass > 0)) return std::nullopt;
   const Eigen::Vector3d moments = principal_moments(inertial.inertia);
   if (!(moments[0] > 0)) return std::nullopt;  // not a rigid body's tensor: inertia-invalid says so
   Gyration g;
   g.largest = std::sqrt(moments[2] / mass);
+  if (sole_axis && sole_axis->norm() > 0) {
+    const Eigen::Vector3d axis = sole_axis->normalized();
+    g.largest = std::sqrt(axis.dot(inertial.inertia * axis) / mass);
+    g.about_axis = true;
+  }
   g.smallest = std::sqrt(moments[0] / mass);
   if (joint_frames.size() >= 2)
     for (const Eigen::Vector3d& frame : joint_frames) g.spread = std::max(g.spread, (frame - inertial.com).norm());
@@ -70,7 +85,7 @@ std::string Gyration::bound_text() const {
                      format_number(kGyrationFloor), format_number(spread, 3));
 }
 
-std::string inertia_doubt(const Asset& asset, const Link& link) {
+std::string inertia_doubt(const Asset& asset, const Link& link, const std::optional<Eigen::Vector3d>& sole_axis) {
   if (!link.inertial) return {};
   const Inertial& in = *link.inertial;
   const Eigen::Matrix3d& t = in.inertia;
@@ -81,7 +96,7 @@ std::string inertia_doubt(const Asset& asset, const Link& link) {
       t(2, 2) == in.mass.value)
     return fmt::format("link '{}' has mass and moments all {}: placeholder values", link.name.text,
                        format_number(in.mass.value, 4));
-  const auto g = judge_gyration(in, joint_frames_on(asset, link));
+  const auto g = judge_gyration(in, joint_frames_on(asset, link), sole_axis);
   if (!g || g->verdict == Gyration::Verdict::Plausible) return {};
   if (g->verdict == Gyration::Verdict::TooSmall)
     return fmt::format("link '{}' has a radius of gyration √(I/m) of {} m, below {} m: a point mass typed in",

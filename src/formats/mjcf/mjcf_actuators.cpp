@@ -97,8 +97,8 @@ OptQuantity range_bound(const Attr& a, const char* name, Unit unit, double scale
 
 }  // namespace
 
-void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler, Values& values,
-                   Asset& asset) {
+void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler,
+                   const FixedTendons& tendons, Values& values, Asset& asset) {
   const std::string_view tag = el->Name();
   const char* cls = el->Attribute("class");
   if (cls && !defaults.has_class(cls)) {
@@ -114,6 +114,10 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   const char* joint_name = el->Attribute("joint");
   if (!joint_name) joint_name = el->Attribute("jointinparent");
   if (!joint_name) {
+    if (const char* tendon = el->Attribute("tendon"); tendon && tendons.contains(tendon))
+      for (const std::string& moved : tendons.at(tendon))
+        for (Joint& j : asset.joints)
+          if (j.name.text == moved) j.actuation = Actuation::Actuated;
     for (const char* other : {"tendon", "site", "body", "cranksite"})
       if (const char* target = el->Attribute(other)) {
         values.unsupported(values.element_span(el), fmt::format("{} acts through {} '{}'", label, other, target))
@@ -129,6 +133,9 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
     values.error(values.value_span(own(el, "joint"), "joint"), fmt::format("{} names unknown joint '{}'", label, joint_name));
     return;
   }
+  joint->actuation = Actuation::Actuated;
+  if (p.gear.attr && std::abs(p.gear.value) != 1.0 && p.gear.value != 0.0)
+    joint->transmission = Transmission{std::abs(p.gear.value), values.token_span(p.gear.attr, "gear", 0)};
   if (tag != "position" && tag != "general" && tag != "motor") {
     values.unsupported(values.element_span(el), fmt::format("<{}> actuators are not modelled ({})", tag, label))
         .note(fmt::format("The joint '{}' counts as undriven by it.", joint_name));

@@ -9,14 +9,22 @@
 // by its control range (×gain×|g|) or force range.
 #include <tinyxml2.h>
 
+#include <string>
+#include <unordered_map>
+#include <vector>
+
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_values.h"
 #include "model/asset.h"
 
 namespace assetlint::mjcf {
 
-// Reads one actuator element onto the joint it names (already in `asset`).
-void read_actuator(const tinyxml2::XMLElement* el, const Defaults& defaults, const Compiler& compiler, Values& values,
-                   Asset& asset);
+// <tendon><fixed name="t"><joint joint="j" coef="c"/>…: the joints each fixed tendon moves.
+using FixedTendons = std::unordered_map<std::string, std::vector<std::string>>;
+
+// Reads one actuator element onto the joint it names (already in `asset`), and marks every
+// joint it moves, directly or through a fixed tendon, as actuated.
+void read_actuator(const tinyxml2::XMLElement* el, const Defaults& defaults, const Compiler& compiler,
+                   const FixedTendons& tendons, Values& values, Asset& asset);
 
 }  // namespace assetlint::mjcf

@@ -56,20 +56,41 @@ class Reader {
     read_timestep(sections);
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
+    const FixedTendons tendons = read_fixed_tendons(sections);
     for (const XMLElement* el : sections) {
       const std::string_view tag = el->Name();
       if (tag == "equality") {
         for (const XMLElement* c : sources_.children(el))
           if (std::string_view(c->Name()) == "joint") read_equality_joint(c);
       } else if (tag == "actuator") {
-        for (const XMLElement* c : sources_.children(el)) read_actuator(c, defaults_, compiler_, values_, result_.asset);
+        for (const XMLElement* c : sources_.children(el))
+          read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset);
       }
     }
+    // MJCF lists every actuator: a joint none of them reaches is moved only by its links.
+    for (Joint& joint : result_.asset.joints)
+      if (joint.actuation == Actuation::Unknown) joint.actuation = Actuation::Passive;
     result_.asset.index_names();  // after the equalities: they make the mimics
     return std::move(result_);
   }
 
  private:
+  FixedTendons read_fixed_tendons(const std::vector<const XMLElement*>& sections) const {
+    FixedTendons tendons;
+    for (const XMLElement* el : sections) {
+      if (std::string_view(el->Name()) != "tendon") continue;
+      for (const XMLElement* fixed : sources_.children(el)) {
+        const char* name = fixed->Attribute("name");
+        if (std::string_view(fixed->Name()) != "fixed" || !name) continue;
+        std::vector<std::string>& joints = tendons[name];
+        for (const XMLElement* j : sources_.children(fixed))
+          if (const char* joint = j->Attribute("joint"); joint && std::string_view(j->Name()) == "joint")
+            joints.emplace_back(trim(joint));
+      }
+    }
+    return tendons;
+  }
+
   void read_compiler(const XMLElement* el) {
     if (const char* angle = el->Attribute("angle")) {
       const std::string_view a = trim(angle);
