@@ -85,51 +85,11 @@ std::vector<std::string> installed_packages(const std::vector<Block>& blocks) {
   return packages;
 }
 
-// The assets: a hand whose mimic follower is limited below its gearing (a warning), and
-// an arm with nothing to report. Written here, not taken from the corpus.
-const char* const kHand = R"(<?xml version="1.0"?>
-<robot name="hand">
-  <link name="palm"/>
-  <link name="knuckle"><inertial><mass value="0.03"/><inertia ixx="2e-5" ixy="0" ixz="0" iyy="2e-5" iyz="0" izz="4e-6"/></inertial></link>
-  <link name="tip"><inertial><mass value="0.012"/><inertia ixx="2e-6" ixy="0" ixz="0" iyy="2e-6" iyz="0" izz="1e-6"/></inertial></link>
-  <joint name="drive" type="revolute">
-    <parent link="palm"/>
-    <child link="knuckle"/>
-    <limit lower="0" upper="0.8" effort="20" velocity="3.0"/>
-  </joint>
-  <joint name="follow" type="revolute">
-    <parent link="knuckle"/>
-    <child link="tip"/>
-    <limit lower="-0.8" upper="0" effort="20" velocity="1.5"/>
-    <mimic joint="drive" multiplier="-1"/>
-  </joint>
-</robot>
-)";
+// The assets (fixtures/ci): hand.urdf, whose mimic follower is limited below its gearing (a
+// warning), arm.urdf with nothing to report, and wrist.urdf, whose limits are inverted (an
+// error), added later as a new asset.
+std::string fixture(const char* name) { return read_file(assetlint::test::fixtures_dir() / "ci" / name); }
 
-const char* const kArm = R"(<?xml version="1.0"?>
-<robot name="arm">
-  <link name="base"/>
-  <link name="upper"><inertial><mass value="1.2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.004"/></inertial></link>
-  <joint name="shoulder" type="revolute">
-    <parent link="base"/>
-    <child link="upper"/>
-    <limit lower="-1.5" upper="1.5" effort="40" velocity="2.0"/>
-  </joint>
-</robot>
-)";
-
-// A new asset whose limits are inverted: an error.
-const char* const kWrist = R"(<?xml version="1.0"?>
-<robot name="wrist">
-  <link name="base"/>
-  <link name="flange"><inertial><mass value="0.4"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.0005"/></inertial></link>
-  <joint name="roll" type="revolute">
-    <parent link="base"/>
-    <child link="flange"/>
-    <limit lower="1.0" upper="-1.0" effort="10" velocity="2.0"/>
-  </joint>
-</robot>
-)";
 
 const std::string kGit = "git -c user.name=test -c user.email=test@example.invalid -c init.defaultBranch=main "
                          "-c commit.gpgsign=false ";
@@ -138,8 +98,8 @@ class AssetRepository {
  public:
   AssetRepository() {
     std::filesystem::create_directories(root() / "assets");
-    write_file(root() / "assets" / "hand.urdf", kHand);
-    write_file(root() / "assets" / "arm.urdf", kArm);
+    write_file(root() / "assets" / "hand.urdf", fixture("hand.urdf"));
+    write_file(root() / "assets" / "arm.urdf", fixture("arm.urdf"));
     REQUIRE(run(kGit + "init -q && " + kGit + "add . && " + kGit + "commit -q -m assets") == 0);
   }
   const std::filesystem::path& root() const { return root_; }
@@ -217,18 +177,18 @@ TEST_CASE("docs/ci.md: the recipes' commands run as written in an asset reposito
     CHECK(out.find("::") == std::string::npos);
 
     // Lines added above the recorded finding keep it matched; a new asset with an error fails.
-    std::string hand = kHand;
+    std::string hand = fixture("hand.urdf");
     hand.insert(hand.find("  <link name=\"palm\"/>"), "  <!-- reviewed -->\n  <!-- twice -->\n");
     write_file(repo.root() / "assets" / "hand.urdf", hand);
     std::filesystem::create_directories(repo.root() / "assets" / "wrist");
-    write_file(repo.root() / "assets" / "wrist" / "wrist.urdf", kWrist);
+    write_file(repo.root() / "assets" / "wrist" / "wrist.urdf", fixture("wrist.urdf"));
     CHECK(repo.run(commands[3]) == 1);
     CHECK(out.find("::error file=assets/wrist/wrist.urdf,line=8,") != std::string::npos);
     CHECK(out.find("hand.urdf,") == std::string::npos);
 
     // Fixing the recorded finding names the stale entry without failing the job.
     std::filesystem::remove_all(repo.root() / "assets" / "wrist");
-    write_file(repo.root() / "assets" / "hand.urdf", assetlint::test::replace_once(kHand, "velocity=\"1.5\"", "velocity=\"3.0\""));
+    write_file(repo.root() / "assets" / "hand.urdf", assetlint::test::replace_once(fixture("hand.urdf"), "velocity=\"1.5\"", "velocity=\"3.0\""));
     CHECK(repo.run(commands[3]) == 0);
     CHECK(out.find("1 baseline entry no longer occurs") != std::string::npos);
     CHECK(out.find("assets/hand.urdf: joint 'follow' limit.velocity [mimic-max-velocity]") != std::string::npos);
@@ -238,13 +198,13 @@ TEST_CASE("docs/ci.md: the recipes' commands run as written in an asset reposito
     CHECK(repo.run(commands[4]) == 0);
     INFO(out);
     CHECK(out.rfind("::warning file=assets/hand.urdf,line=14,", 0) == 0);
-    write_file(repo.root() / "assets" / "wrist.urdf", kWrist);
+    write_file(repo.root() / "assets" / "wrist.urdf", fixture("wrist.urdf"));
     CHECK(repo.run(commands[4]) == 1);
     CHECK(out.find("::error file=assets/wrist.urdf,line=8,") != std::string::npos);
   }
 
   SECTION("GitLab CI: JUnit and Code Quality reports, then a concise log") {
-    write_file(repo.root() / "assets" / "wrist.urdf", kWrist);
+    write_file(repo.root() / "assets" / "wrist.urdf", fixture("wrist.urdf"));
     CHECK(repo.run(commands[5]) == 0);
     INFO(out);
     const std::string junit = read_file(repo.root() / "asset-lint.xml");
@@ -308,7 +268,7 @@ TEST_CASE("docs/ci.md: the recipes' commands run as written in an asset reposito
     CHECK(out.find("assets/hand.urdf:14:") != std::string::npos);
     // With the finding fixed, both hooks pass.
     write_file(repo.root() / "assets" / "hand.urdf",
-               assetlint::test::replace_once(kHand, "velocity=\"1.5\"", "velocity=\"3.0\""));
+               assetlint::test::replace_once(fixture("hand.urdf"), "velocity=\"1.5\"", "velocity=\"3.0\""));
     CHECK(repo.run("timeout 180 pre-commit run --all-files") == 0);
   }
 }

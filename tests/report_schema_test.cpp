@@ -53,18 +53,7 @@ TEST_CASE("report: JUnit output validates against the readers' schema in every k
     const char* expected_in_report;
   };
   const auto report = assetlint::test::report_dir().string();
-  write_file(dir.path() / "arm.urdf", R"(<?xml version="1.0"?>
-<robot name="arm">
-  <link name="base"/>
-  <link name="upper"><inertial><mass value="1.2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.004"/></inertial></link>
-  <joint name="shoulder" type="revolute">
-    <parent link="base"/>
-    <child link="upper"/>
-    <limit lower="-1.5" upper="1.5" effort="40" velocity="2.0"/>
-  </joint>
-</robot>
-)");
-  const auto clean = (dir.path() / "arm.urdf").string();
+  const auto clean = (assetlint::test::fixtures_dir() / "ci" / "arm.urdf").string();
   const Run runs[] = {
       {"clean", {clean}, 0, "failures=\"0\" errors=\"0\""},
       {"findings", {report + "/gripper.urdf", report + "/joints.usda"}, 1, "<failure message="},
