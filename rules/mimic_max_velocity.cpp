@@ -12,8 +12,6 @@ namespace {
 // PHYSICS.md §3 and the guide: leave max joint velocity unset on mimic joints; the
 // followed joint's limit already bounds them through the gearing, and a lower
 // limit on the mimic makes the velocity clamp fight the mimic constraint.
-// Relative slack for limits written with fewer digits than the product.
-constexpr double kSlack = 1e-6;
 // USD's maxJointVelocity default (deg/s): authoring it explicitly changes nothing.
 constexpr double kUsdDefaultMaxVelocityDeg = 1e6;
 
@@ -28,13 +26,12 @@ class MimicMaxVelocity final : public Rule {
       const Quantity& velocity = *joint.velocity;
       const bool usd = asset.format == SourceFormat::Usda;
       if (usd && velocity.authored >= kUsdDefaultMaxVelocityDeg) continue;
-      const Joint* reference = asset.followed_joint(joint);
-      const double gearing = std::fabs(joint.mimic->multiplier.value);
-      const Quantity* reference_velocity =
-          reference && is_single_dof(reference->type) && reference->velocity && reference->velocity->value > 0 ? &*reference->velocity : nullptr;
-      const double needed = reference_velocity ? gearing * reference_velocity->value : 0.0;
+      const auto demand = mimic_demand(asset, joint);
+      const Joint* reference = demand ? demand->reference : nullptr;
+      const Quantity* reference_velocity = demand ? demand->reference_velocity : nullptr;
+      const double needed = demand ? demand->velocity : 0.0;
 
-      if (reference_velocity && velocity.value < needed * (1 - kSlack)) {
+      if (reference_velocity && velocity.value < needed * (1 - kMimicDemandSlack)) {
         report_too_low(joint, *reference, *reference_velocity, needed, usd, out);
       } else if (usd) {
         // At or above the bound the clamp never acts: harmless, only not what the guide does.

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "util/numbers.h"
 
 namespace assetlint::rules {
@@ -23,6 +25,15 @@ std::string describe_written(const Quantity& q, double model_value, int signific
   const auto symbol = unit_symbol(model_unit(q.unit));
   return fmt::format("{} (stage units; {}{}{})", format_number(q.authored_for(model_value), significant),
                      format_number(model_value, significant), symbol.empty() ? "" : " ", symbol);
+}
+
+std::optional<MimicDemand> mimic_demand(const Asset& asset, const Joint& joint) {
+  if (!joint.mimic || !is_single_dof(joint.type)) return std::nullopt;
+  const Joint* reference = asset.followed_joint(joint);
+  if (!reference || !is_single_dof(reference->type) || !reference->velocity || reference->velocity->value <= 0)
+    return std::nullopt;
+  return MimicDemand{reference, &*reference->velocity,
+                     std::fabs(joint.mimic->multiplier.value) * reference->velocity->value};
 }
 
 Edit replace_value(const Quantity& q, double model_value, int significant) {

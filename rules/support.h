@@ -1,5 +1,6 @@
 #pragma once
 // Small helpers shared by rules: wording of quantities and building value edits.
+#include <optional>
 #include <string>
 
 #include "engine/diagnostic.h"
@@ -24,6 +25,19 @@ Edit replace_value(const Quantity& q, double model_value, int significant = 6);
 // A name's last '/'-separated element ("/gripper/finger" → "finger"): keeps primary messages
 // short when names are USD prim paths; the diagnostic's span says where.
 std::string short_path(const std::string& name);
+
+// The velocity a mimic joint must reach (model units): |multiplier| times its followed
+// joint's velocity limit; nothing when the joint is no single-DOF mimic or its followed
+// joint has no positive single-DOF limit. mimic-max-velocity owns a mimic's velocity limit
+// against this bound; other rules defer to it.
+struct MimicDemand {
+  const Joint* reference;
+  const Quantity* reference_velocity;
+  double velocity;
+};
+std::optional<MimicDemand> mimic_demand(const Asset& asset, const Joint& joint);
+// Relative slack below that bound for limits written with fewer digits than the product.
+inline constexpr double kMimicDemandSlack = 1e-6;
 
 // "revolute joint 'J0'"
 std::string joint_label(const Joint& joint);

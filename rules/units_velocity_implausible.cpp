@@ -160,6 +160,12 @@ class UnitsVelocityImplausible final : public Rule {
       const double meant_time = range / meant;
       if (meant_time >= min_time && meant_time <= max_time) v.reading = reading, v.meant = meant, v.meant_time = meant_time;
     }
+    // A mimic's limit that the other reading would put below what its gearing demands is
+    // mimic-max-velocity's value: converting it would make that rule raise it back, forever.
+    if (v.fast && v.reading) {
+      const auto demand = mimic_demand(asset, joint);
+      if (demand && v.meant < demand->velocity * (1 - kMimicDemandSlack)) return std::nullopt;
+    }
     // Too slow with no unit that explains it is not this rule's business (joint-max-velocity).
     if (!v.fast && !v.reading) return std::nullopt;
     return v;

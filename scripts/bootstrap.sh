@@ -10,13 +10,16 @@ packages=(
   catch2 libtomlplusplus-dev nlohmann-json3-dev
   libmujoco-dev
   librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot
+  libxml2-utils  # xmllint: the JUnit report is validated against tests/schemas/junit.xsd
 )
 # Fuzzing (fuzz/README.md) needs clang and libclang-rt-14-dev; the suite itself only replays
 # the fuzz regressions with the project's compiler, so they are not installed here.
 
 # Optional tools some tests use when present (they warn and skip otherwise). Installing
 # them is best effort: a failure here never fails the bootstrap.
-#  - pre-commit (Debian package, ~12 small Python packages): the .pre-commit-hooks.yaml test;
+#  - pre-commit (Debian package, ~12 small Python packages): the .pre-commit-hooks.yaml and
+#    docs/ci.md recipe tests;
+#  - lintian (Debian package): the .deb test reports its errors;
 #  - the SARIF Multitool (npm, a self-contained .NET binary, ~100 MB) into tools/node_modules
 #    (git-ignored): validates the SARIF output;
 #  - physx-js-webidl 2.7.3 (npm, PhysX 5.6.1 compiled to WASM, ~10 MB) into tools/node_modules:
@@ -46,29 +49,30 @@ npm_install_tool() {
      "$spec" "${keep[@]}" >/dev/null 2>&1)
 }
 
+# apt_install_optional CONSEQUENCE PACKAGE...: installs the PACKAGEs not yet installed, best
+# effort; on failure says CONSEQUENCE.
+apt_install_optional() {
+  local consequence="$1" missing=() pkg
+  shift
+  for pkg in "$@"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "bootstrap: (optional) installing ${missing[*]}"
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" \
+    || echo "bootstrap: warning: ${missing[*]} not installed; $consequence"
+}
+
 install_optional() {
   [ "${ASSET_LINT_SKIP_OPTIONAL:-0}" = "1" ] && return 0
   local root
   root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-  if ! command -v pre-commit >/dev/null 2>&1; then
-    echo "bootstrap: (optional) installing pre-commit"
-    local sudo=""
-    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends pre-commit \
-      || echo "bootstrap: warning: pre-commit not installed; its test will be skipped"
-  fi
+  apt_install_optional "the pre-commit tests will be skipped" pre-commit
+  apt_install_optional "the package test will not run it" lintian
   # bench/run.sh only: hyperfine, GNU time (peak memory), check_urdf, valgrind (callgrind).
-  local bench_missing=()
-  for pkg in hyperfine time liburdfdom-tools valgrind; do
-    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || bench_missing+=("$pkg")
-  done
-  if [ ${#bench_missing[@]} -gt 0 ]; then
-    echo "bootstrap: (optional) installing ${bench_missing[*]} for bench/run.sh"
-    local sudo_bench=""
-    if [ "$(id -u)" -ne 0 ]; then sudo_bench="sudo"; fi
-    DEBIAN_FRONTEND=noninteractive $sudo_bench apt-get install -y -qq --no-install-recommends "${bench_missing[@]}" \
-      || echo "bootstrap: warning: ${bench_missing[*]} not installed; bench/run.sh needs them"
-  fi
+  apt_install_optional "bench/run.sh needs them" hyperfine time liburdfdom-tools valgrind
   local multitool="$root/tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool"
   if [ ! -x "$multitool" ] && command -v npm >/dev/null 2>&1; then
     echo "bootstrap: (optional) installing the SARIF Multitool into tools/node_modules"

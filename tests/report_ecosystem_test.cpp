@@ -1,4 +1,5 @@
-// The pieces around the binary: the pre-commit hooks and `cmake --install`.
+// The pieces around the binary: the pre-commit hooks and `cmake --install` (the .deb is
+// tests/package_test.cpp).
 // Tools that are not installed make these tests warn and skip.
 #include <catch2/catch.hpp>
 
@@ -7,28 +8,14 @@
 
 #include "test_support.h"
 
+using assetlint::test::on_path;
 using assetlint::test::read_file;
+using assetlint::test::run_shell;
+using assetlint::test::shell_quote;
 using assetlint::test::TempDir;
 using assetlint::test::write_file;
 
 namespace {
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-bool on_path(const char* tool) {
-  return std::system((std::string("command -v ") + tool + " >/dev/null 2>&1").c_str()) == 0;
-}
-
-// Runs a shell command; returns its exit status, its output in `output`.
-int shell(const std::string& command, const std::filesystem::path& log, std::string& output) {
-  const int status = std::system((command + " >" + quote(log.string()) + " 2>&1 </dev/null").c_str());
-  output = std::filesystem::exists(log) ? read_file(log) : "";
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 std::filesystem::path binary_dir() { return std::filesystem::path(ASSET_LINT_BINARY).parent_path(); }
 
@@ -48,7 +35,7 @@ TEST_CASE("report: the pre-commit hooks run asset-lint on staged assets", "[repo
   const std::string git = "git -c user.name=test -c user.email=test@example.invalid -c init.defaultBranch=main "
                           "-c commit.gpgsign=false";
   std::string out;
-  REQUIRE(shell("cd " + quote(hooks.string()) + " && " + git + " init -q && " + git + " add . && " + git +
+  REQUIRE(run_shell("cd " + shell_quote(hooks.string()) + " && " + git + " init -q && " + git + " add . && " + git +
                     " commit -q -m hooks",
                 dir.path() / "git.log", out) == 0);
   const std::string gripper = read_file(assetlint::test::fixtures_dir() / "report" / "gripper.urdf");
@@ -56,15 +43,15 @@ TEST_CASE("report: the pre-commit hooks run asset-lint on staged assets", "[repo
   write_file(assets / "notes.txt", "not an asset\n");
   // A text USD layer with an upper-case extension: the hooks' pattern is case-insensitive.
   write_file(assets / "Joints.USD", read_file(assetlint::test::fixtures_dir() / "report" / "joints.usda"));
-  REQUIRE(shell("cd " + quote(assets.string()) + " && " + git + " init -q && " + git + " add .", dir.path() / "git.log",
+  REQUIRE(run_shell("cd " + shell_quote(assets.string()) + " && " + git + " init -q && " + git + " add .", dir.path() / "git.log",
                 out) == 0);
 
   // language: system needs no network; everything runs offline, bounded by a timeout.
-  const std::string env = "PATH=" + quote(binary_dir().string()) + ":\"$PATH\" PRE_COMMIT_HOME=" +
-                          quote((dir.path() / "cache").string()) + " PRE_COMMIT_COLOR=never ";
+  const std::string env = "PATH=" + shell_quote(binary_dir().string()) + ":\"$PATH\" PRE_COMMIT_HOME=" +
+                          shell_quote((dir.path() / "cache").string()) + " PRE_COMMIT_COLOR=never ";
   auto try_repo = [&](const std::string& hook, std::string& output) {
-    return shell("cd " + quote(assets.string()) + " && " + env + "timeout 180 pre-commit try-repo " +
-                     quote(hooks.string()) + " " + hook + " --all-files",
+    return run_shell("cd " + shell_quote(assets.string()) + " && " + env + "timeout 180 pre-commit try-repo " +
+                     shell_quote(hooks.string()) + " " + hook + " --all-files",
                  dir.path() / (hook + ".log"), output);
   };
   CHECK(try_repo("asset-lint", out) == 1);
@@ -96,18 +83,27 @@ TEST_CASE("report: cmake --install puts the binary and its man page under the pr
   }
   TempDir prefix;
   std::string out;
-  REQUIRE(shell("timeout 120 cmake --install " + quote(binary_dir().string()) + " --prefix " +
-                    quote(prefix.path().string()),
+  REQUIRE(run_shell("timeout 120 cmake --install " + shell_quote(binary_dir().string()) + " --prefix " +
+                    shell_quote(prefix.path().string()),
                 prefix.path() / "install.log", out) == 0);
   INFO(out);
   const auto bin = prefix.path() / "bin" / "asset-lint";
-  const auto man = prefix.path() / "share" / "man" / "man1" / "asset-lint.1";
+  const auto man = prefix.path() / "share" / "man" / "man1" / "asset-lint.1.gz";
+  const auto doc = prefix.path() / "share" / "doc" / "asset-lint";
   REQUIRE(std::filesystem::exists(bin));
   REQUIRE(std::filesystem::exists(man));
-  const std::string page = read_file(man);
+  std::string page;
+  REQUIRE(run_shell("gzip -dc " + shell_quote(man.string()), prefix.path() / "man.log", page) == 0);
   CHECK(page.rfind(".TH ASSET-LINT 1", 0) == 0);
   CHECK(page.find("--output-format") != std::string::npos);
   CHECK(page.find("--exit-zero") != std::string::npos);
-  CHECK(shell(quote(bin.string()) + " --version", prefix.path() / "version.log", out) == 0);
+  CHECK(read_file(prefix.path() / "share" / "asset-lint" / ".pre-commit-hooks.yaml") ==
+        read_file(assetlint::test::source_dir() / ".pre-commit-hooks.yaml"));
+  CHECK(std::filesystem::exists(doc / "README.md"));
+  CHECK(std::filesystem::exists(doc / "docs" / "ci.md"));
+  CHECK(std::filesystem::exists(doc / "docs" / "rules" / "mimic-max-velocity.md"));
+  CHECK(read_file(doc / "copyright").find("License: Apache-2.0") != std::string::npos);
+  CHECK(std::filesystem::exists(doc / "changelog.gz"));
+  CHECK(run_shell(shell_quote(bin.string()) + " --version", prefix.path() / "version.log", out) == 0);
   CHECK(out == std::string("asset-lint ") + ASSET_LINT_VERSION + "\n");
 }

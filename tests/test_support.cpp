@@ -29,13 +29,22 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
-namespace {
 std::string shell_quote(const std::string& arg) {
   std::string quoted = "'";
   for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
 }
-}  // namespace
+
+bool on_path(const std::string& tool) {
+  return std::system(("command -v " + shell_quote(tool) + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+int run_shell(const std::string& command, const std::filesystem::path& log, std::string& output) {
+  const int status =
+      std::system(("{ " + command + "\n} >" + shell_quote(log.string()) + " 2>&1 </dev/null").c_str());
+  output = std::filesystem::exists(log) ? read_file(log) : "";
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
 
 CommandResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd) {
   return run_cli_with_input(args, cwd, "");

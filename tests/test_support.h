@@ -29,6 +29,14 @@ CommandResult run_cli(const std::vector<std::string>& args, const std::filesyste
 CommandResult run_cli_with_input(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                                  const std::string& input);
 
+// `arg` quoted for a POSIX shell.
+std::string shell_quote(const std::string& arg);
+// Whether `tool` is a command on PATH.
+bool on_path(const std::string& tool);
+// Runs `command` with `sh -c` (stdin from /dev/null, stdout and stderr into the file `log`);
+// returns its exit status (-1 when it did not exit) and its combined output in `output`.
+int run_shell(const std::string& command, const std::filesystem::path& log, std::string& output);
+
 // A fresh empty directory under the system temp dir, removed by the destructor.
 class TempDir {
  public:
