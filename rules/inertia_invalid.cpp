@@ -113,16 +113,13 @@ class InertiaInvalid final : public Rule {
     };
     std::vector<Found> found;
     const physics::Articulation articulation(asset);
-    const auto frames = physics::joint_frames_by_link(asset);
     for (const Link& link : asset.links) {
       const auto placed = where.find(&link);
       if (placed == where.end() || placed->second.role != Role::BodyStart || !link.inertial) continue;
       if (physics::pasted_tensor(link.inertial->inertia) ||
           std::find(already.begin(), already.end(), &link) != already.end())
         continue;
-      const auto on_link = frames.find(link.name.text);
-      const auto g = physics::judge_gyration(*link.inertial,
-                                             on_link == frames.end() ? std::vector<Eigen::Vector3d>{} : on_link->second,
+      const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link),
                                              articulation.sole_rotation_axis(link));
       if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
       const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;

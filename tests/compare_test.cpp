@@ -1,6 +1,7 @@
 // `asset-lint compare`: name pairing, the three Robotiq fixtures agreeing, each planted
 // unit slip found and named, and the Robotiq corpus pair.
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <regex>
 #include <sstream>
@@ -76,6 +77,17 @@ TEST_CASE("the URDF, USDA and MJCF Robotiq fixtures describe the same gripper", 
   const FileReport three = compare({kUrdf, kUsda, kMjcf}, loose);
   INFO(rendered(three));
   CHECK(three.diagnostics.empty());
+
+  std::string error;
+  std::vector<ComparisonSummary> summaries;
+  compare_files({kUrdf, kMjcf}, no_settings, loose, error, &summaries);
+  REQUIRE(summaries.size() == 1);
+  const auto lines = summary_lines(summaries.front());
+  REQUIRE(lines.size() == 3);
+  CHECK(lines[0] == "compare: robotiq_2f85.urdf (URDF) and robotiq_2f85.xml (MJCF)");
+  CHECK(summaries.front().joints_paired > 0);
+  CHECK(summaries.front().values_compared > summaries.front().joints_paired);
+  CHECK(lines[2] == fmt::format("  all {} compared values agree", summaries.front().values_compared));
 }
 
 TEST_CASE("compare finds each planted slip and names it", "[compare]") {
@@ -147,9 +159,24 @@ TEST_CASE("compare pairs the Robotiq corpus URDF with Robotiq's USD stack", "[co
   Settings settings;
   settings.trees.push_back((dir / "usda" / "robotiq_2f85").string());
   std::string error;
-  const FileReport r = compare_files({urdf, usda}, [&](const std::string&) -> const Settings& { return settings; }, {}, error);
+  std::vector<ComparisonSummary> summaries;
+  const FileReport r =
+      compare_files({urdf, usda}, [&](const std::string&) -> const Settings& { return settings; }, {}, error, &summaries);
   REQUIRE(error.empty());
-  const std::string text = rendered(r);
-  WARN(text);
-  CHECK_FALSE(r.diagnostics.empty());
+  REQUIRE(summaries.size() == 1);
+  // The few lines at the head of the report say what differs: the ros-industrial URDF's
+  // 2 rad/s and 1000 N·m placeholders against Robotiq's tuned values, its 0.8 rad stroke
+  // against USD's 47°, the lost armature, and the right inner finger flipped (axis and
+  // multiplier both negated: a sign flip each).
+  const std::vector<std::string> lines = summary_lines(summaries.front());
+  CHECK(lines == std::vector<std::string>{
+                     "compare: robotiq2f85__rosindustrial_arg2f_85_model.urdf (URDF) and "
+                     "Robotiq_2F_85_config_physics_parallel_grip.usda (USD)",
+                     "  paired 4 movable joints and 8 links by name; 2 joints and 3 links only in the URDF, 2 joints "
+                     "and 1 link only in the USD",
+                     "  15 of 25 compared values differ: max velocity ×4, upper limit ×4, armature ×2, lower limit ×2, "
+                     "axis ×1 (a sign flip), max force ×1, mimic multiplier ×1 (a sign flip)"});
+  std::size_t mismatches = 0;
+  for (const Diagnostic& d : r.diagnostics) mismatches += d.rule == "compare-mismatch";
+  CHECK(mismatches == summaries.front().differing());
 }

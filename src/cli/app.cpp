@@ -74,7 +74,12 @@ int run_files(const Options& options, bool compare, std::istream& in, std::ostre
       err << "asset-lint: error: " << error->to_string() << "\n";
       return kExitError;
     }
-    return commands::run_compare(options.paths, {options.map_pairs, options.rtol, options.fix_side, options.fix},
+    // The summary heads a text report on the terminal; machine formats and --output-file
+    // carry the findings alone.
+    const bool text = options.format == "text" || options.format == "full" || options.format == "concise";
+    const bool summary = text && !options.quiet && options.output_file.empty();
+    return commands::run_compare(options.paths,
+                                 {options.map_pairs, options.rtol, options.fix_side, options.fix, summary},
                                  resolver.as_function(), out, err, write_report);
   }
   if (options.paths == std::vector<std::string>{"-"}) {

@@ -110,7 +110,7 @@ bool validate_patterns(const std::vector<std::string>& patterns, const char* fla
 }  // namespace
 
 ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"asset-lint: checks robot assets (URDF, USDA) against PhysX joint-tuning guidance", "asset-lint"};
+  CLI::App app{"asset-lint: checks robot assets (URDF, USDA, MJCF) against PhysX joint-tuning guidance", "asset-lint"};
   Options options;
   options.jobs = std::max(1u, std::thread::hardware_concurrency());
   add_options(app, options);

@@ -1,7 +1,9 @@
 #include "commands/compare.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iterator>
@@ -65,18 +67,27 @@ class Comparer {
   Comparer(const Asset& a, const Asset& b, FileId offset, const CompareOptions& options, bool fix_b, bool fix)
       : a_(a), b_(b), offset_(offset), options_(options), fix_b_(fix_b), fix_(fix) {}
 
-  std::vector<Diagnostic> run() {
+  Comparison run() {
+    summary_.file_a = file_a();
+    summary_.file_b = file_b();
+    summary_.format_a = format_name(a_.format);
+    summary_.format_b = format_name(b_.format);
     compare_joints();
     compare_links();
     compare_rate();
-    return std::move(out_);
+    return {std::move(out_), std::move(summary_)};
   }
 
  private:
   std::string file_a() const { return a_.sources.empty() ? "" : a_.source(0).path(); }
   std::string file_b() const { return b_.sources.empty() ? "" : b_.source(0).path(); }
 
-  Diagnostic& report(const Span& at_a, const Span& at_b, std::string message) {
+  // One difference in `what` ("upper limit"), `slip` naming it when it is one.
+  Diagnostic& report(const std::string& what, const std::string& slip, const Span& at_a, const Span& at_b,
+                     std::string message) {
+    ComparisonSummary::Difference& counted = summary_.differences[what];
+    ++counted.count;
+    if (!slip.empty()) ++counted.slips[slip];
     Diagnostic d{std::string(rules::kCompareMismatch.id), rules::kCompareMismatch.default_severity, at_a, std::move(message),
                  std::nullopt, {}};
     out_.push_back(std::move(d));
@@ -93,6 +104,7 @@ class Comparer {
   // Compares one scalar both files give; `what` reads "stiffness", `owner` "'finger_joint'".
   void scalar(const std::string& what, const std::string& owner, const Quantity& qa, const Span& fa, const Quantity& qb,
               const Span& fb) {
+    ++summary_.values_compared;
     if (!differs(qa.value, qb.value)) return;
     const double ratio = qb.value != 0 ? qa.value / qb.value : std::numeric_limits<double>::infinity();
     const std::string slip = std::isfinite(ratio) ? slip_name(ratio) : std::string();
@@ -101,7 +113,7 @@ class Comparer {
     std::string message = fmt::format("{} of {} differs: {}{} vs {}{}", what, owner, format_number(qa.value, 4), symbol,
                                       format_number(qb.value, 4), symbol);
     if (!slip.empty()) message += ": " + slip;
-    Diagnostic& d = report(qa.span.valid() ? qa.span : fa, qb.span.valid() ? qb.span : fb, std::move(message));
+    Diagnostic& d = report(what, slip, qa.span.valid() ? qa.span : fa, qb.span.valid() ? qb.span : fb, std::move(message));
     d.note(fmt::format("{} ({}): {}.", file_a(), format_name(a_.format), as_written(qa)));
     d.note(fmt::format("{} ({}): {}.", file_b(), format_name(b_.format), as_written(qb)));
     if (std::isfinite(ratio)) d.note(fmt::format("Ratio {} / {} = {}.", format_name(a_.format), format_name(b_.format),
@@ -136,6 +148,9 @@ class Comparer {
     const NameMatch match = match_names(names(ja), names(jb), options_.map);
     for (auto [i, j] : match.pairs) joint_pairs_[ja[i]->name.text] = jb[j]->name.text;
     for (auto [i, j] : match.pairs) compare_joint(*ja[i], *jb[j]);
+    summary_.joints_paired = match.pairs.size();
+    summary_.joints_only_a = match.only_a.size();
+    summary_.joints_only_b = match.only_b.size();
     unmatched("joint", ja, match.only_a, file_b(), 0);
     unmatched("joint", jb, match.only_b, file_a(), offset_);
   }
@@ -169,7 +184,7 @@ class Comparer {
   void compare_joint(const Joint& ja, const Joint& jb) {
     const std::string owner = fmt::format("'{}'", last_component(ja.name.text));
     if (kind(ja.type) != kind(jb.type)) {
-      Diagnostic& d = report(ja.type_span, jb.type_span,
+      Diagnostic& d = report("joint type", "", ja.type_span, jb.type_span,
                              fmt::format("joint type of {} differs: {} vs {}", owner, kind(ja.type), kind(jb.type)));
       d.note("The other quantities of this joint are not compared.");
       return;
@@ -178,9 +193,10 @@ class Comparer {
     if (poses_b_.empty()) poses_b_ = link_poses(b_);
     bool known_a = false, known_b = false;
     const Eigen::Vector3d ua = world_axis(ja, poses_a_, known_a), ub = world_axis(jb, poses_b_, known_b);
+    if (known_a && known_b && is_single_dof(ja.type)) ++summary_.values_compared;
     if (known_a && known_b && is_single_dof(ja.type) && (ua - ub).norm() > std::max(options_.rtol, 1e-9)) {
       const bool flipped = (ua + ub).norm() <= std::max(options_.rtol, 1e-9);
-      Diagnostic& d = report(ja.axis_span, jb.axis_span,
+      Diagnostic& d = report("axis", flipped ? "a sign flip" : "", ja.axis_span, jb.axis_span,
                              fmt::format("axis of {} differs: ({}) vs ({}){}", owner, vec(ua), vec(ub),
                                          flipped ? ": a sign flip" : ""));
       d.note("Both axes are in the frame of the model's root link at the zero configuration.");
@@ -192,7 +208,7 @@ class Comparer {
         scalar("lower limit", owner, *ja.lower, ja.limit_span, *jb.lower, jb.limit_span);
         scalar("upper limit", owner, *ja.upper, ja.limit_span, *jb.upper, jb.limit_span);
       } else if (limited_a != limited_b && ja.type != JointType::Continuous && jb.type != JointType::Continuous) {
-        report(ja.limit_span, jb.limit_span,
+        report("limits", "", ja.limit_span, jb.limit_span,
                fmt::format("{} is limited in {} only", owner, limited_a ? format_name(a_.format) : format_name(b_.format)));
       }
     }
@@ -223,7 +239,7 @@ class Comparer {
     if (!ja.mimic && !jb.mimic) return;
     if (!ja.mimic || !jb.mimic) {
       const Joint& with = ja.mimic ? ja : jb;
-      Diagnostic& d = report(ja.mimic ? ja.mimic->span : ja.span, jb.mimic ? jb.mimic->span : jb.span,
+      Diagnostic& d = report("mimic", "", ja.mimic ? ja.mimic->span : ja.span, jb.mimic ? jb.mimic->span : jb.span,
                              fmt::format("{} follows '{}' in {} only", owner, last_component(with.mimic->reference.text),
                                          ja.mimic ? format_name(a_.format) : format_name(b_.format)));
       d.note("The other file moves the joint on its own: the coupling is missing there.");
@@ -231,7 +247,7 @@ class Comparer {
     }
     const auto paired = joint_pairs_.find(ja.mimic->reference.text);
     if (paired == joint_pairs_.end() || paired->second != jb.mimic->reference.text) {
-      report(ja.mimic->reference.span, jb.mimic->reference.span,
+      report("mimic reference", "", ja.mimic->reference.span, jb.mimic->reference.span,
              fmt::format("{} follows '{}' vs '{}'", owner, last_component(ja.mimic->reference.text),
                          last_component(jb.mimic->reference.text)));
       return;
@@ -255,6 +271,9 @@ class Comparer {
     if (poses_a_.empty()) poses_a_ = link_poses(a_);
     if (poses_b_.empty()) poses_b_ = link_poses(b_);
     for (auto [i, j] : match.pairs) compare_link(*la[i], *lb[j]);
+    summary_.links_paired = match.pairs.size();
+    summary_.links_only_a = match.only_a.size();
+    summary_.links_only_b = match.only_b.size();
     unmatched("link", la, match.only_a, file_b(), 0);
     unmatched("link", lb, match.only_b, file_a(), offset_);
   }
@@ -270,8 +289,9 @@ class Comparer {
     if (pa == poses_a_.end() || pb == poses_b_.end()) return;
     const Eigen::Vector3d ca = pa->second * ia.com, cb = pb->second * ib.com;
     const double length = std::max(ca.norm(), cb.norm());
+    if (ia.com_span.valid() && ib.com_span.valid()) ++summary_.values_compared;
     if (ia.com_span.valid() && ib.com_span.valid() && (ca - cb).norm() > options_.rtol * std::max(length, 1e-3)) {
-      Diagnostic& d = report(ia.com_span, ib.com_span,
+      Diagnostic& d = report("centre of mass", "", ia.com_span, ib.com_span,
                              fmt::format("centre of mass of {} differs: ({}) vs ({}) m", owner, vec(ca), vec(cb)));
       d.note("Both are in the frame of the model's root link at the zero configuration.");
     }
@@ -279,10 +299,11 @@ class Comparer {
     const Eigen::Matrix3d ta = pa->second.linear() * ia.inertia * pa->second.linear().transpose();
     const Eigen::Matrix3d tb = pb->second.linear() * ib.inertia * pb->second.linear().transpose();
     const double size = std::max(ta.norm(), tb.norm());
+    ++summary_.values_compared;
     if ((ta - tb).norm() > options_.rtol * size) {
       const double ratio = tb.norm() > 0 ? ta.norm() / tb.norm() : 0.0;
       const std::string slip = ratio > 0 ? slip_name(ratio) : std::string();
-      Diagnostic& d = report(ia.inertia_span, ib.inertia_span,
+      Diagnostic& d = report("inertia", slip, ia.inertia_span, ib.inertia_span,
                              fmt::format("inertia of {} differs{}", owner, slip.empty() ? "" : ": " + slip));
       d.note(fmt::format("{}: diagonal ({}) kg·m², off-diagonal ({}) in the root frame.", file_a(), vec(ta.diagonal()),
                          vec(Eigen::Vector3d(ta(0, 1), ta(0, 2), ta(1, 2)))));
@@ -305,19 +326,70 @@ class Comparer {
   bool fix_b_;
   bool fix_;
   std::vector<Diagnostic> out_;
+  ComparisonSummary summary_;
   std::map<std::string, std::string> joint_pairs_;
   std::map<std::string, Eigen::Isometry3d, std::less<>> poses_a_, poses_b_;
 };
 
 }  // namespace
 
-std::vector<Diagnostic> compare_assets(const Asset& a, const Asset& b, FileId b_offset, const CompareOptions& options,
-                                       bool fix_b, bool fix_enabled) {
+Comparison compare_assets(const Asset& a, const Asset& b, FileId b_offset, const CompareOptions& options, bool fix_b,
+                          bool fix_enabled) {
   return Comparer(a, b, b_offset, options, fix_b, fix_enabled).run();
 }
 
+std::size_t ComparisonSummary::differing() const {
+  std::size_t n = 0;
+  for (const auto& [what, difference] : differences) n += difference.count;
+  return n;
+}
+
+std::vector<std::string> summary_lines(const ComparisonSummary& s) {
+  const auto file = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+  const auto counted = [](std::size_t n, const char* noun) {
+    return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
+  };
+  const auto unpaired = [&](std::size_t joints, std::size_t links, const std::string& format) -> std::string {
+    if (joints == 0 && links == 0) return {};
+    std::vector<std::string> parts;
+    if (joints) parts.push_back(counted(joints, "joint"));
+    if (links) parts.push_back(counted(links, "link"));
+    return fmt::format("{} only in the {}", fmt::join(parts, " and "), format);
+  };
+  std::vector<std::string> lines;
+  lines.push_back(fmt::format("compare: {} ({}) and {} ({})", file(s.file_a), s.format_a, file(s.file_b), s.format_b));
+  std::string paired = fmt::format("  paired {} and {} by name", counted(s.joints_paired, "movable joint"),
+                                   counted(s.links_paired, "link"));
+  std::vector<std::string> missing;
+  for (auto text : {unpaired(s.joints_only_a, s.links_only_a, s.format_a),
+                    unpaired(s.joints_only_b, s.links_only_b, s.format_b)})
+    if (!text.empty()) missing.push_back(std::move(text));
+  if (!missing.empty()) paired += fmt::format("; {}", fmt::join(missing, ", "));
+  lines.push_back(paired);
+  if (s.differences.empty()) {
+    lines.push_back(fmt::format("  all {} compared values agree", s.values_compared));
+    return lines;
+  }
+  std::vector<const std::pair<const std::string, ComparisonSummary::Difference>*> order;
+  for (const auto& entry : s.differences) order.push_back(&entry);
+  std::stable_sort(order.begin(), order.end(), [](auto* x, auto* y) { return x->second.count > y->second.count; });
+  std::vector<std::string> parts;
+  for (const auto* entry : order) {
+    std::string part = fmt::format("{} ×{}", entry->first, entry->second.count);
+    std::vector<std::string> slips;
+    for (const auto& [slip, n] : entry->second.slips)
+      slips.push_back(n == entry->second.count ? slip : fmt::format("{} of them {}", n, slip));
+    if (!slips.empty()) part += fmt::format(" ({})", fmt::join(slips, ", "));
+    parts.push_back(std::move(part));
+  }
+  lines.push_back(fmt::format("  {} of {} compared values differ: {}", s.differing(), s.values_compared,
+                              fmt::join(parts, ", ")));
+  return lines;
+}
+
 FileReport compare_files(const std::vector<std::string>& paths, const SettingsFor& settings,
-                         const CompareOptions& options, std::string& error) {
+                         const CompareOptions& options, std::string& error,
+                         std::vector<ComparisonSummary>* summaries) {
   FileReport report;
   report.path = paths.empty() ? std::string() : paths.front();
   std::vector<ReadResult> reads;
@@ -342,9 +414,10 @@ FileReport compare_files(const std::vector<std::string>& paths, const SettingsFo
   for (std::size_t k = 1; k < reads.size(); ++k) {
     const bool fix_b = options.fix_side == static_cast<int>(k);
     const bool fix = options.fix_side == 0 || fix_b;
-    auto found = compare_assets(reads.front().asset, reads[k].asset, offset, options, fix_b, fix);
-    report.diagnostics.insert(report.diagnostics.end(), std::make_move_iterator(found.begin()),
-                              std::make_move_iterator(found.end()));
+    Comparison found = compare_assets(reads.front().asset, reads[k].asset, offset, options, fix_b, fix);
+    report.diagnostics.insert(report.diagnostics.end(), std::make_move_iterator(found.diagnostics.begin()),
+                              std::make_move_iterator(found.diagnostics.end()));
+    if (summaries) summaries->push_back(std::move(found.summary));
     offset += static_cast<FileId>(reads[k].asset.sources.size());
   }
   return report;

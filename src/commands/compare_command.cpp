@@ -39,7 +39,8 @@ int run_compare(const std::vector<std::string>& paths, const CompareCommandOptio
     return kExitError;
   }
   std::string error;
-  FileReport report = compare_files(paths, settings, options, error);
+  std::vector<ComparisonSummary> summaries;
+  FileReport report = compare_files(paths, settings, options, error, &summaries);
   if (error.empty() && command.fix) {
     int changed = 0;
     if (auto failure = apply_compare_fixes(report, settings, changed)) {
@@ -47,12 +48,16 @@ int run_compare(const std::vector<std::string>& paths, const CompareCommandOptio
       return kExitError;
     }
     out << fmt::format("compare: {} file{} fixed\n", changed, changed == 1 ? "" : "s");
-    report = compare_files(paths, settings, options, error);
+    summaries.clear();
+    report = compare_files(paths, settings, options, error, &summaries);
   }
   if (!error.empty()) {
     err << "asset-lint: error: " << error << "\n";
     return kExitError;
   }
+  if (command.summary)
+    for (const ComparisonSummary& summary : summaries)
+      for (const std::string& line : summary_lines(summary)) out << line << "\n";
   write_report({report}, RunProblems{});
   return report.diagnostics.empty() ? kExitClean : kExitFindings;
 }

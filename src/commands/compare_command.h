@@ -15,6 +15,8 @@ struct CompareCommandOptions {
   double rtol = 1e-6;
   std::string fix_side;  // a compared path (or its file name); empty: none
   bool fix = false;
+  // Print the summary of each compared pair before the findings (the text formats).
+  bool summary = false;
 };
 
 // 0 when the files agree, 1 when they differ, 2 on a usage or read error.

@@ -41,15 +41,6 @@ std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& lin
   return frames;
 }
 
-std::unordered_map<std::string_view, std::vector<Eigen::Vector3d>> joint_frames_by_link(const Asset& asset) {
-  std::unordered_map<std::string_view, std::vector<Eigen::Vector3d>> frames;
-  for (const Joint& joint : asset.joints) {
-    frames[joint.parent.text].push_back(joint.frame_in_link[0].translation());
-    frames[joint.child.text].push_back(joint.frame_in_link[1].translation());
-  }
-  return frames;
-}
-
 std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames,
                                        const std::optional<Eigen::Vector3d>& sole_axis) {
   const double mass = inertial.mass.value;

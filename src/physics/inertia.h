@@ -4,8 +4,6 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
-#include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "model/asset.h"
@@ -55,8 +53,6 @@ struct Gyration {
 
 // The joint frames on a link, in the link frame: where it is a joint's parent or child.
 std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& link);
-// The same for every link at once, keyed by link name (O(joints)).
-std::unordered_map<std::string_view, std::vector<Eigen::Vector3d>> joint_frames_by_link(const Asset& asset);
 
 // Needs an authored, positive-definite tensor, a positive mass and an authored COM. With
 // `sole_axis` (a link that only turns about that axis, in its frame) only the moment about it
