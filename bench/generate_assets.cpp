@@ -49,8 +49,9 @@ void write_urdf(std::FILE* out, int kind, long joints) {
   std::fprintf(out, "</robot>\n");
 }
 
-// A grid mesh of `vertices` points (rows of 32) written as USD arrays.
-void usda_mesh(std::FILE* out, long body, long vertices) {
+// A grid mesh of about `vertices` points (rows of 32) written as USD arrays; returns
+// the number of points written.
+long usda_mesh(std::FILE* out, long body, long vertices) {
   const long columns = 32;
   const long rows = vertices / columns < 2 ? 2 : vertices / columns;
   std::fprintf(out, "            def Mesh \"shape\"\n            {\n                int[] faceVertexCounts = [");
@@ -68,30 +69,42 @@ void usda_mesh(std::FILE* out, long body, long vertices) {
       std::fprintf(out, "%s(%.4f, %.4f, %.4f)", (r || c) ? ", " : "", 0.001 * static_cast<double>(c),
                    0.001 * static_cast<double>(r), 0.0001 * static_cast<double>(body % 97));
   std::fputs("]\n                uniform token subdivisionScheme = \"none\"\n            }\n", out);
+  return rows * columns;
 }
+
+// Bytes of one joint prim as write_usda writes it (about; only used to size the meshes).
+constexpr double kJointBytes = 640;
 
 void write_usda(std::FILE* out, double megabytes, long joints) {
   std::fprintf(out,
                "#usda 1.0\n(\n    defaultPrim = \"robot\"\n    metersPerUnit = 1\n    kilogramsPerUnit = 1\n)\n\n"
-               "def PhysicsScene \"physicsScene\"\n{\n    uniform float physxScene:timeStepsPerSecond = 60\n}\n\n"
+               "def PhysicsScene \"physicsScene\" (\n    prepend apiSchemas = [\"PhysxSceneAPI\"]\n)\n"
+               "{\n    uniform float physxScene:timeStepsPerSecond = 60\n}\n\n"
                "def Xform \"robot\" (\n    prepend apiSchemas = [\"PhysxArticulationAPI\"]\n)\n{\n"
                "    int physxArticulation:solverPositionIterationCount = 32\n");
-  // About 27 bytes per vertex: its point (~24) plus its share of indices and counts.
-  const double target = megabytes * 1e6;
-  const long per_body = static_cast<long>(target / 27.0 / static_cast<double>(joints + 1));
+  // The meshes carry the bulk of the bytes. Each body's mesh is sized from the bytes still
+  // missing and the bytes per vertex the previous mesh took, so the file lands near the target.
+  const double target = megabytes * 1e6 - kJointBytes * static_cast<double>(joints);
+  double bytes_per_vertex = 50;
   for (long i = 0; i <= joints; ++i) {
     std::fprintf(out,
                  "    def Xform \"link%ld\" (\n        prepend apiSchemas = [\"PhysicsRigidBodyAPI\", \"PhysicsMassAPI\"]\n    )\n    {\n"
                  "        float physics:mass = 0.5\n        float3 physics:diagonalInertia = (0.001, 0.001, 0.0005)\n"
+                 "        point3f physics:centerOfMass = (0, 0, 0.05)\n"
                  "        def Xform \"geometry\"\n        {\n",
                  i);
-    usda_mesh(out, i, per_body);
+    const double missing = target - static_cast<double>(std::ftell(out));
+    const long vertices = static_cast<long>(missing / bytes_per_vertex / static_cast<double>(joints + 1 - i));
+    const long before = std::ftell(out);
+    const long written = usda_mesh(out, i, vertices);
+    bytes_per_vertex = static_cast<double>(std::ftell(out) - before) / static_cast<double>(written);
     std::fputs("        }\n    }\n", out);
   }
   std::fputs("    def Scope \"joints\"\n    {\n", out);
   for (long i = 1; i <= joints; ++i) {
     std::fprintf(out,
-                 "        def PhysicsRevoluteJoint \"joint%ld\" (\n            prepend apiSchemas = [\"PhysicsDriveAPI:angular\"]\n        )\n"
+                 "        def PhysicsRevoluteJoint \"joint%ld\" (\n"
+                 "            prepend apiSchemas = [\"PhysicsDriveAPI:angular\", \"PhysxJointAPI\"]\n        )\n"
                  "        {\n            rel physics:body0 = </robot/link%ld>\n            rel physics:body1 = </robot/link%ld>\n"
                  "            uniform token physics:axis = \"Z\"\n            float physics:lowerLimit = -90\n"
                  "            float physics:upperLimit = 90\n            float drive:angular:physics:stiffness = 0.5\n"

@@ -21,6 +21,10 @@ work=${BENCH_WORK:-$(mktemp -d)}
 [ -n "${BENCH_WORK:-}" ] || trap 'rm -rf "$work"' EXIT
 mkdir -p "$work"
 N="nice -n 10"
+# Measurements written by hand (before/after comparisons) live below this line and are kept.
+kept_marker='<!-- Kept by bench/run.sh: hand-written measurements below. -->'
+kept=""
+[ -f "$out" ] && kept=$(awk -v m="$kept_marker" '$0 == m { on = 1 } on' "$out")
 
 # median_of NAME: the median (s) from hyperfine's JSON export $work/NAME.json
 median_of() { sed -n 's/.*"median": *\([0-9.e-]*\).*/\1/p' "$work/$1.json" | head -1; }
@@ -154,17 +158,21 @@ fi
 stage="$work/stage-200mb.usda"
 "$gen" usda-stage 200 5000 "$stage"
 bytes=$(stat -c %s "$stage")
+load=$(cut -d' ' -f1 /proc/loadavg)
 hf usda 5 "$lint $stage"
 t=$(median_of usda)
+# CPU seconds (user + system, means): what the run costs when it has a core to itself.
+cpu=$(sed -n 's/.*"user": *\([0-9.e-]*\).*/\1/p; s/.*"system": *\([0-9.e-]*\).*/\1/p' "$work/usda.json" | head -2 | awk '{ s += $1 } END { print s }')
 m=$(peak_kb "$lint" "$stage")
 {
   echo "## USDA: parse + compose + lint of a synthetic stage"
   echo
-  echo "Command: \`bench_generate usda-stage 200 5000 stage.usda && asset-lint stage.usda\`."
+  echo "Command: \`bench_generate usda-stage 200 5000 stage.usda && asset-lint stage.usda\` (load average $load)."
   echo
-  echo "| bytes | median (s) | throughput (MB/s) | peak RSS (MB) | limit 2 × file + 64 MB |"
-  echo "|---:|---:|---:|---:|---:|"
-  echo "| $bytes | $(fmt "$t") | $(awk -v b="$bytes" -v t="$t" 'BEGIN { printf "%.0f", b / 1e6 / t }') | $(awk -v m="$m" 'BEGIN { printf "%.0f", m * 1024 / 1e6 }') | $(awk -v b="$bytes" 'BEGIN { printf "%.0f", 2 * b / 1e6 + 64 }') |"
+  echo "| bytes | median wall (s) | MB/s (wall) | CPU user+sys (s) | MB/s (CPU) | peak RSS (MB) | limit 2 × file + 64 MB |"
+  echo "|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| $bytes | $(fmt "$t") | $(awk -v b="$bytes" -v t="$t" 'BEGIN { printf "%.0f", b / 1e6 / t }') | $(fmt "$cpu") | $(awk -v b="$bytes" -v t="$cpu" 'BEGIN { printf "%.0f", b / 1e6 / t }') | $(awk -v m="$m" 'BEGIN { printf "%.0f", m * 1024 / 1e6 }') | $(awk -v b="$bytes" 'BEGIN { printf "%.0f", 2 * b / 1e6 + 64 }') |"
   echo
 } >> "$out"
+[ -n "$kept" ] && printf '%s\n' "$kept" >> "$out"
 echo "bench: wrote $out"

@@ -64,32 +64,44 @@ std::optional<std::string> DiskFileSystem::read(const std::string& path, std::st
                         describe_size(limits_.max_file_bytes));
     return std::nullopt;
   }
+  // Exactly the size fstat gave: growing the string afterwards would copy it, and a 200 MB
+  // file would then cost 400 MB at its peak.
   std::string text;
   text.resize(static_cast<std::size_t>(size));
   std::size_t done = 0;
-  for (;;) {
-    if (done == text.size()) {
-      // The file may have grown since fstat: read on, up to the limit.
-      if (text.size() >= limits_.max_file_bytes) {
-        char probe;
-        const ssize_t more = ::read(file.fd, &probe, 1);
-        if (more > 0) {
-          error = fmt::format("grew past the {} limit while it was read (--max-file-size)",
-                              describe_size(limits_.max_file_bytes));
-          return std::nullopt;
-        }
-        break;
-      }
-      text.resize(std::min<std::uint64_t>(limits_.max_file_bytes, text.size() + 65536));
+  auto read_some = [&](char* into, std::size_t want) -> ssize_t {
+    for (;;) {
+      const ssize_t n = ::read(file.fd, into, want);
+      if (n >= 0 || errno != EINTR) return n;
     }
-    const ssize_t n = ::read(file.fd, text.data() + done, text.size() - done);
+  };
+  while (done < text.size()) {
+    const ssize_t n = read_some(text.data() + done, text.size() - done);
     if (n < 0) {
-      if (errno == EINTR) continue;
       error = std::strerror(errno);
       return std::nullopt;
     }
     if (n == 0) break;  // end of file (earlier than fstat said when it was truncated)
     done += static_cast<std::size_t>(n);
+  }
+  if (done == text.size()) {
+    // The file may have grown since fstat: read on, up to the limit.
+    char chunk[16384];
+    for (;;) {
+      const ssize_t n = read_some(chunk, sizeof chunk);
+      if (n < 0) {
+        error = std::strerror(errno);
+        return std::nullopt;
+      }
+      if (n == 0) break;
+      if (text.size() + static_cast<std::size_t>(n) > limits_.max_file_bytes) {
+        error = fmt::format("grew past the {} limit while it was read (--max-file-size)",
+                            describe_size(limits_.max_file_bytes));
+        return std::nullopt;
+      }
+      text.append(chunk, static_cast<std::size_t>(n));
+    }
+    done = text.size();
   }
   text.resize(done);
   return text;

@@ -34,6 +34,18 @@ std::vector<const Joint*> Asset::mimic_followers(std::string_view name) const {
   return out;
 }
 
+std::vector<const Joint*> Asset::joints_at(std::string_view link) const {
+  std::vector<const Joint*> out;
+  if (indexed()) {
+    if (auto it = index_->link_joints.find(link); it != index_->link_joints.end())
+      for (std::size_t i : it->second) out.push_back(&joints[i]);
+    return out;
+  }
+  for (const auto& joint : joints)
+    if (joint.parent.text == link || joint.child.text == link) out.push_back(&joint);
+  return out;
+}
+
 const Joint* Asset::followed_joint(const Joint& mimic) const {
   if (!mimic.mimic || !is_single_dof(mimic.type) || mimic.mimic->reference.text == mimic.name.text) return nullptr;
   const Joint* reference = find_joint(mimic.mimic->reference.text);
@@ -51,6 +63,8 @@ void Asset::index_names() {
   for (std::size_t i = 0; i < joints.size(); ++i) {
     index->joints.emplace(joints[i].name.text, i);
     if (joints[i].mimic) index->followers[joints[i].mimic->reference.text].push_back(i);
+    index->link_joints[joints[i].parent.text].push_back(i);
+    if (joints[i].child.text != joints[i].parent.text) index->link_joints[joints[i].child.text].push_back(i);
   }
   index_ = std::move(index);
 }

@@ -159,6 +159,8 @@ struct Asset {
   const Joint* find_joint(std::string_view name) const;
   // The joints whose mimic names `name`, in document order.
   std::vector<const Joint*> mimic_followers(std::string_view name) const;
+  // The joints whose parent or child is the link `name`, in document order (each once).
+  std::vector<const Joint*> joints_at(std::string_view link) const;
   // The joint a mimic follows when structure-mimic-reference accepts the pair (defined,
   // not itself, not a mimic, both single-DOF); nullptr otherwise, and for non-mimics.
   // Rules derive values and fixes only through an accepted pair.
@@ -172,6 +174,7 @@ struct Asset {
     std::size_t link_count = 0, joint_count = 0;
     std::unordered_map<std::string, std::size_t, TransparentHash, std::equal_to<>> links, joints;
     std::unordered_map<std::string, std::vector<std::size_t>, TransparentHash, std::equal_to<>> followers;
+    std::unordered_map<std::string, std::vector<std::size_t>, TransparentHash, std::equal_to<>> link_joints;
   };
   bool indexed() const { return index_ && index_->link_count == links.size() && index_->joint_count == joints.size(); }
   std::shared_ptr<const NameIndex> index_;

@@ -34,9 +34,9 @@ bool pasted_tensor(const Eigen::Matrix3d& m) {
 
 std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& link) {
   std::vector<Eigen::Vector3d> frames;
-  for (const Joint& joint : asset.joints) {
-    if (joint.parent.text == link.name.text) frames.push_back(joint.frame_in_link[0].translation());
-    if (joint.child.text == link.name.text) frames.push_back(joint.frame_in_link[1].translation());
+  for (const Joint* joint : asset.joints_at(link.name.text)) {
+    if (joint->parent.text == link.name.text) frames.push_back(joint->frame_in_link[0].translation());
+    if (joint->child.text == link.name.text) frames.push_back(joint->frame_in_link[1].translation());
   }
   return frames;
 }
