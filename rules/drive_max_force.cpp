@@ -20,6 +20,7 @@ class DriveMaxForce final : public Rule {
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const Joint* spec = physics::spec_joint(asset, settings);
+    const SharedValues efforts(asset, &Joint::effort);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
       const bool usd = asset.format == SourceFormat::Usda;
@@ -29,7 +30,7 @@ class DriveMaxForce final : public Rule {
       // spec names it; otherwise its effort is only a limit.
       const auto required = &joint == spec ? physics::required_force(asset, settings, joint) : std::nullopt;
       const bool driven = joint.drive || (&joint == spec && (settings.gripper.driven_joint || required));
-      Context c{{asset, settings, joint, usd, driven, out}, required ? &*required : nullptr};
+      Context c{{asset, settings, joint, usd, driven, out}, required ? &*required : nullptr, &efforts};
       if (usd && (!joint.drive->max_force || std::isinf(joint.drive->max_force->value))) {
         unbounded(c);
         continue;
@@ -44,6 +45,7 @@ class DriveMaxForce final : public Rule {
  private:
   struct Context : LimitCheck {
     const physics::RequiredForce* required;
+    const SharedValues* efforts;
     const char* what() const { return usd ? "maxForce" : "effort"; }
   };
 
@@ -77,8 +79,8 @@ class DriveMaxForce final : public Rule {
       return;
     }
     if (c.required) return against_spec(c, q);
-    const auto sharing = joints_sharing(c.asset, c.joint, &Joint::effort);
-    const bool round_repeat = !c.usd && is_power_of_ten(q.value, 3) && !sharing.empty();
+    const std::size_t sharing = c.efforts->others(c.joint);
+    const bool round_repeat = !c.usd && is_power_of_ten(q.value, 3) && sharing > 0;
     if (q.value < placeholder && !round_repeat) return;
     Diagnostic& d = c.out.report(q.span, Severity::Info,
                                  fmt::format("{} {} of {} looks like a placeholder", c.what(), describe(q), c.label()));
@@ -87,7 +89,7 @@ class DriveMaxForce final : public Rule {
     if (round_repeat)
       d.note(fmt::format("The same round {} is on {} other joint{} of the file: a value written for every joint, not "
                          "a motor's rating.",
-                         format_number(q.value), sharing.size(), sharing.size() == 1 ? "" : "s"));
+                         format_number(q.value), sharing, sharing == 1 ? "" : "s"));
     d.note("Without a [gripper] spec in asset-lint.toml this is an info. With one, the bound is judged against the "
            "force the payload needs (a placeholder far above it makes the simulated gripper hold what the real one drops).");
   }

@@ -11,7 +11,7 @@
 namespace assetlint::rules {
 
 DriveModel::DriveModel(const Asset& asset, const Settings& settings)
-    : asset_(asset), articulation_(asset), rate_(physics::effective_simulation(asset, settings)) {}
+    : asset_(asset), articulation_(physics::shared_articulation(asset)), rate_(physics::effective_simulation(asset, settings)) {}
 
 std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   if (!is_single_dof(joint.type) || joint.is_mimic() || !joint.drive) return std::nullopt;
@@ -22,8 +22,8 @@ std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   d.drive = &drive;
   d.stiffness = drive.stiffness->value;
   d.damping = drive.damping ? drive.damping->value : 0.0;
-  d.inertia = physics::effective_inertia(articulation_, asset_, joint);
-  d.articulated = articulation_.inertia(joint);
+  d.inertia = physics::effective_inertia(*articulation_, asset_, joint);
+  d.articulated = articulation_->inertia(joint);
   d.inertia_used = drive.type == DriveType::Acceleration ? 1.0 : d.inertia.value;
   if (drive.type != DriveType::Acceleration && d.inertia.known && d.inertia.link)
     d.inertia_doubt = physics::inertia_doubt(asset_, *d.inertia.link, articulation_.sole_rotation_axis(*d.inertia.link));

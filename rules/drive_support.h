@@ -44,12 +44,12 @@ class DriveModel {
   DriveModel(const Asset& asset, const Settings& settings);
   // A joint with an applied spring drive (stiffness > 0), not a mimic, single DOF.
   std::optional<DrivenJoint> spring_drive(const Joint& joint) const;
-  const physics::Articulation& articulation() const { return articulation_; }
+  const physics::Articulation& articulation() const { return *articulation_; }
   const physics::SimulationRate& rate() const { return rate_; }
 
  private:
   const Asset& asset_;
-  physics::Articulation articulation_;
+  std::shared_ptr<const physics::Articulation> articulation_;
   physics::SimulationRate rate_;
 };
 

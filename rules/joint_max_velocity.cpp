@@ -23,11 +23,13 @@ class JointMaxVelocity final : public Rule {
     const Joint* spec = physics::spec_joint(asset, settings);
     const bool usd = asset.format == SourceFormat::Usda;
     bool placeholder_reported = false;
+    const SharedValues velocities(asset, &Joint::velocity);
+    const std::size_t movable = movable_joint_count(asset);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
       const auto wanted = &joint == spec ? physics::required_velocity(settings, joint) : std::nullopt;
       const bool driven = has_active_drive(joint) || (&joint == spec && (settings.gripper.driven_joint || wanted));
-      const Context c{{asset, settings, joint, usd, driven, out}, wanted ? &*wanted : nullptr};
+      const Context c{{asset, settings, joint, usd, driven, out}, wanted ? &*wanted : nullptr, &velocities, movable};
       const OptQuantity& v = joint.velocity;
       if (v && v->span.valid() && v->value == 0 && usd) frozen(c, *v);
       else if (v && v->span.valid() && v->value <= 0 && !usd) sentinel(c, *v);
@@ -40,6 +42,8 @@ class JointMaxVelocity final : public Rule {
  private:
   struct Context : LimitCheck {
     const physics::RequiredVelocity* wanted;
+    const SharedValues* velocities;
+    std::size_t movable_joints;
     // The unit the file writes this joint's velocity in: a prismatic joint's is a distance per second.
     Unit file_unit() const {
       if (!is_angular(joint.type)) return Unit::MeterPerSecond;
@@ -98,21 +102,21 @@ class JointMaxVelocity final : public Rule {
     d.note(fmt::format("Authored {}; the spec gives {}.", describe(v), describe(c.wanted->velocity, v.unit)));
     d.note(fmt::format("The spec: {}.", c.wanted->derivation));
     d.note(fmt::format("Reported beyond tolerance_factor {}× either way.", format_number(tolerance)));
-    const auto sharing = joints_sharing(c.asset, c.joint, &Joint::velocity);
-    if (!c.usd && is_power_of_ten(v.value, 2) && !sharing.empty())
+    const std::size_t sharing = c.velocities->others(c.joint);
+    if (!c.usd && is_power_of_ten(v.value, 2) && sharing > 0)
       d.note(fmt::format("The same round {} is on {} other joint{}: a placeholder.", format_number(v.authored),
-                         sharing.size(), sharing.size() == 1 ? "" : "s"));
+                         sharing, sharing == 1 ? "" : "s"));
     spec_fix(c, v, d);
   }
 
   // URDF: velocity="100" on every joint is a value nobody measured. Once per file.
   static bool placeholder(const Context& c, const Quantity& v) {
     if (c.usd || !is_power_of_ten(v.value, 2)) return false;
-    const auto sharing = joints_sharing(c.asset, c.joint, &Joint::velocity);
-    if (sharing.empty() || sharing.size() + 1 < movable_joint_count(c.asset)) return false;
+    const std::size_t sharing = c.velocities->others(c.joint);
+    if (sharing == 0 || sharing + 1 < c.movable_joints) return false;
     Diagnostic& d = c.out.report(v.span, Severity::Info,
                                  fmt::format("velocity {} on every joint ({}) looks like a placeholder", describe(v),
-                                             sharing.size() + 1));
+                                             sharing + 1));
     d.note("The same round value on every movable joint is not a motor's rating; this finding is made once per file.");
     d.note("With a [gripper] spec in asset-lint.toml, the spec's joint is judged against the speed the spec gives.");
     return true;

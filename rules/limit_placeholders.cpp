@@ -14,16 +14,17 @@ bool is_power_of_ten(double value, int min_exponent) {
   return exponent >= min_exponent && std::fabs(value - std::pow(10.0, exponent)) <= 1e-9 * value;
 }
 
-std::vector<const Joint*> joints_sharing(const Asset& asset, const Joint& joint, OptQuantity Joint::*field) {
-  std::vector<const Joint*> same;
-  const OptQuantity& mine = joint.*field;
-  if (!mine) return same;
-  for (const Joint& other : asset.joints) {
-    const OptQuantity& theirs = other.*field;
-    if (&other == &joint || !is_single_dof(other.type) || !theirs) continue;
-    if (theirs->value == mine->value) same.push_back(&other);
-  }
-  return same;
+SharedValues::SharedValues(const Asset& asset, OptQuantity Joint::*field) : field_(field) {
+  for (const Joint& joint : asset.joints)
+    if (const OptQuantity& q = joint.*field; is_single_dof(joint.type) && q && !std::isnan(q->value)) ++count_[q->value];
+}
+
+std::size_t SharedValues::others(const Joint& joint) const {
+  const OptQuantity& mine = joint.*field_;
+  if (!mine || std::isnan(mine->value)) return 0;
+  const auto it = count_.find(mine->value);
+  if (it == count_.end()) return 0;
+  return it->second - (is_single_dof(joint.type) ? 1 : 0);
 }
 
 std::size_t movable_joint_count(const Asset& asset) {

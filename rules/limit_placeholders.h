@@ -2,8 +2,9 @@
 // Round limit values repeated across joints: what an author writes when the real number
 // is unknown (effort="1000" on a gripper's driven joint and every mimic, velocity="100"
 // on every joint of a hand). Their meaning is "not set", not a spec.
+#include <cstddef>
 #include <string_view>
-#include <vector>
+#include <unordered_map>
 
 #include "engine/rule.h"
 #include "model/asset.h"
@@ -13,9 +14,18 @@ namespace assetlint::rules {
 // Whether `value` is 10^n for some whole n ≥ min_exponent.
 bool is_power_of_ten(double value, int min_exponent);
 
-// The movable single-DOF joints other than `joint` whose `field` (effort or velocity)
-// holds the same value as `joint`'s.
-std::vector<const Joint*> joints_sharing(const Asset& asset, const Joint& joint, OptQuantity Joint::*field);
+// How many movable single-DOF joints hold each value of `field` (effort or velocity),
+// counted once per check so that asking for every joint stays linear in the joints.
+class SharedValues {
+ public:
+  SharedValues(const Asset& asset, OptQuantity Joint::*field);
+  // The movable single-DOF joints other than `joint` whose field holds the same value.
+  std::size_t others(const Joint& joint) const;
+
+ private:
+  OptQuantity Joint::*field_;
+  std::unordered_map<double, std::size_t> count_;
+};
 
 // Movable single-DOF joints in the asset.
 std::size_t movable_joint_count(const Asset& asset);

@@ -22,7 +22,8 @@ class MassRatio final : public Rule {
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double max_ratio = rule_option(info_, settings, "max_ratio");
-    const physics::Articulation articulation(asset);
+    const auto shared = physics::shared_articulation(asset);
+    const physics::Articulation& articulation = *shared;
     struct Pair {
       const Joint* joint;
       const physics::Body* light;

@@ -132,3 +132,33 @@ TEST_CASE("add-suppressions: MJCF default classes are told apart by their class,
                           "      <joint axis=\"1 0 0\" range=\"0 47\" armature=\"0.004\"/>");
   CHECK(after == expected);
 }
+
+TEST_CASE("add-suppressions: an MJCF fragment both checked alone and <include>d is done in one run",
+          "[add-suppressions]") {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "parts");
+  const std::string model =
+      "<mujoco model=\"m\">\n  <compiler angle=\"radian\"/>\n  <worldbody>\n"
+      "    <include file=\"parts/arm.xml\"/>\n  </worldbody>\n</mujoco>\n";
+  // Its finding shows only in the including model; checked alone it is an include fragment.
+  const std::string arm =
+      "<mujoco>\n  <body name=\"upper\">\n    <inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"0.01 0.01 0.01\"/>\n"
+      "    <joint name=\"shoulder\" type=\"hinge\" range=\"1 -1\" limited=\"true\"/>\n  </body>\n</mujoco>\n";
+  write_file(dir.path() / "model.xml", model);
+  write_file(dir.path() / "parts" / "arm.xml", arm);
+  const std::string expected = replace_once(arm, "    <joint name=\"shoulder\"",
+                                            "    <!-- asset-lint: ignore[limits-inverted] -->\n    <joint name=\"shoulder\"");
+  auto first = run_cli({"--add-suppressions", "."}, dir.path());
+  CHECK(first.err == "asset-lint: added 1 suppression comment to parts/arm.xml\n");
+  CHECK(first.out == "No problems found in 2 files.\n");
+  CHECK(first.exit_code == 0);
+  CHECK(read_file(dir.path() / "parts" / "arm.xml") == expected);
+  CHECK(read_file(dir.path() / "model.xml") == model);
+  auto second = run_cli({"--add-suppressions", "."}, dir.path());
+  CHECK(second.err.empty());
+  CHECK(second.exit_code == 0);
+  CHECK(read_file(dir.path() / "parts" / "arm.xml") == expected);
+  auto check = run_cli({"."}, dir.path());
+  CHECK(check.exit_code == 0);
+  CHECK(check.out == "No problems found in 2 files.\n");
+}

@@ -164,3 +164,21 @@ TEST_CASE("unknown when a moving body has no authored mass or COM; world-welded 
   const Body* finger = articulation.body_of("/r/finger");
   CHECK_FALSE(finger->mass_known);  // welded to the massless pad
 }
+
+TEST_CASE("shared_articulation: one build per asset while a scope is open, a fresh one otherwise", "[physics][articulation]") {
+  Asset asset;
+  asset.links = {massless("base"), link("arm", 2.0, Eigen::Vector3d(0.1, 0, 0), Eigen::Vector3d(0.01, 0.01, 0.01))};
+  asset.joints = {joint("shoulder", JointType::Revolute, "base", "arm")};
+  Asset other = asset;
+  const auto outside = shared_articulation(asset);
+  CHECK(shared_articulation(asset) != outside);
+  {
+    const SharedArticulationScope scope(asset);
+    const auto first = shared_articulation(asset);
+    CHECK(shared_articulation(asset) == first);
+    CHECK(shared_articulation(other) != first);
+    CHECK(first->bodies().size() == outside->bodies().size());
+    CHECK(first->body_of("arm")->links.front() == &asset.links[1]);
+  }
+  CHECK(shared_articulation(asset) != outside);
+}

@@ -18,20 +18,21 @@ TEST_CASE("introspection: --show-settings names where every value came from", "[
              "extend-ignore = [\"units-*\"]\nextend-exclude = [\"vendor\"]\n\n[simulation]\ntimesteps_per_second = 250\n\n"
              "[rules.joint-max-velocity]\nseverity = \"error\"\n");
   write_file(dir.path() / "gripper.urdf", read_file(assetlint::test::fixtures_dir() / "report" / "gripper.urdf"));
-  auto r = run_cli({"--show-settings", "gripper.urdf", "--extend-exclude", "old", "--position-iterations", "64"},
+  auto r = run_cli({"--show-settings", "gripper.urdf", "--extend-exclude", "old", "--position-iterations", "64",
+                    "--extend-ignore", "mimic-limit-conflict"},
                    dir.path());
   CHECK(r.exit_code == 0);
   CHECK(r.err.empty());
   std::vector<std::string> units;
   for (const auto* rule : assetlint::rules::catalog())
-    if (rule->id.starts_with("units-")) units.emplace_back(rule->id);
+    if (rule->id.starts_with("units-") || rule->id == "mimic-limit-conflict") units.emplace_back(rule->id);
   CHECK(r.out ==
         "# Settings for gripper.urdf\n"
         "# configuration: asset-lint.toml\n"
         "# checked tree (USD composition reads inside it): " + dir.path().string() + "\n"
         "\n"
         "select = []                              # default: every rule\n"
-        "ignore = [\"units-*\"]                     # configuration or --ignore/--extend-ignore\n"
+        "ignore = [\"units-*\", \"mimic-limit-conflict\"] # asset-lint.toml:1, --extend-ignore\n"
         "# rules that run: " + std::to_string(assetlint::rules::catalog().size() - units.size()) + " of " +
         std::to_string(assetlint::rules::catalog().size()) + " (not: " + fmt::format("{}", fmt::join(units, ", ")) +
         ")\n"
@@ -61,6 +62,31 @@ TEST_CASE("introspection: --show-settings names where every value came from", "[
   auto bad = run_cli({"--show-settings", "gripper.urdf"}, dir.path());
   CHECK(bad.exit_code == 2);
   CHECK(bad.err == "asset-lint: error: asset-lint.toml:1:10: 'select' must be an array of rule ids or globs\n");
+}
+
+TEST_CASE("introspection: --show-settings gives each rule pattern the file line or flag it came from",
+          "[introspection]") {
+  TempDir dir;
+  write_file(dir.path() / "gripper.urdf", read_file(assetlint::test::fixtures_dir() / "report" / "gripper.urdf"));
+  auto line_of = [&](const std::vector<std::string>& args, const std::string& key) {
+    std::vector<std::string> all = {"--show-settings", "gripper.urdf"};
+    all.insert(all.end(), args.begin(), args.end());
+    const auto r = run_cli(all, dir.path());
+    REQUIRE(r.exit_code == 0);
+    const auto at = r.out.find("\n" + key);
+    REQUIRE(at != std::string::npos);
+    return r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+  };
+  write_file(dir.path() / "asset-lint.toml",
+             "select = [\"mimic-*\",\n  \"limits-*\"]\n\n[per-file-ignores]\n\"old/**\" = [\"limits-*\"]\n");
+  CHECK(line_of({"--extend-select", "structure-*"}, "select = ") ==
+        "select = [\"mimic-*\", \"limits-*\", \"structure-*\"] # asset-lint.toml:1, asset-lint.toml:2, --extend-select");
+  CHECK(line_of({"--select", "limits-inverted"}, "select = ") == "select = [\"limits-inverted\"]             # --select");
+  CHECK(line_of({}, "\"old/**\"") == "\"old/**\" = [\"limits-*\"]                  # asset-lint.toml:5");
+  write_file(dir.path() / "asset-lint.toml", "extend-select = [\"structure-*\"]\n");
+  CHECK(line_of({"--ignore", "mimic-*"}, "select = ") ==
+        "select = [\"*\", \"structure-*\"]            # default (every rule), extended, asset-lint.toml:1");
+  CHECK(line_of({"--ignore", "mimic-*"}, "ignore = ") == "ignore = [\"mimic-*\"]                     # --ignore");
 }
 
 TEST_CASE("introspection: --show-files lists what a run would check", "[introspection]") {

@@ -15,7 +15,10 @@ using assetlint::test::write_file;
 namespace {
 
 bool runs(std::vector<std::string> select, std::vector<std::string> ignore, const char* rule) {
-  return RuleSelection{std::move(select), std::move(ignore)}.enabled(rule);
+  RuleSelection selection;
+  selection.select = std::move(select);
+  selection.ignore = std::move(ignore);
+  return selection.enabled(rule);
 }
 
 }  // namespace

@@ -28,16 +28,31 @@ std::string canonical_path(const std::string& path) {
   return ec ? path : canonical.string();
 }
 
-// Which result writes each file: a layer composed into a checked stage is fixed in the
-// stage's context (its rate and configuration), once, even when it is also checked alone.
-// Maps a canonical path to the index of the result that owns it.
+// Which result writes each file. A layer that a checked stage reads (a USD sublayer or
+// reference, an MJCF <include>) is the stage's to fix, in the stage's context (its rate and
+// configuration), once, even when it is also checked alone, and whether or not the stage
+// has anything to change in it: its findings alone are folded into the stage's, as a check
+// folds them, so the stage's edits are the ones that hold (and a second run adds nothing).
+// A stage that is itself read by another comes after one that is not. Maps a canonical
+// path to the index of the result that owns it.
 std::map<std::string, std::size_t> file_owners(const std::vector<fix::FixResult>& results) {
+  std::vector<std::set<std::string>> layers(results.size());  // what each stage reads besides itself
+  std::set<std::string> read_by_a_stage;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (results[i].error) continue;
+    const FileReport& read = results[i].initial;
+    const std::string self = canonical_path(results[i].path);
+    for (std::size_t id = 1; id < read.sources.size(); ++id)
+      if (auto layer = canonical_path(read.sources[id]->path()); layer != self) layers[i].insert(std::move(layer));
+    read_by_a_stage.insert(layers[i].begin(), layers[i].end());
+  }
   std::map<std::string, std::size_t> owners;
-  for (int composed = 1; composed >= 0; --composed)  // stages' layers first, then files alone
+  for (int top = 1; top >= 0; --top)
     for (std::size_t i = 0; i < results.size(); ++i)
-      for (const fix::FixedFile& file : results[i].files)
-        if ((canonical_path(file.path) != canonical_path(results[i].path)) == (composed == 1))
-          owners.try_emplace(canonical_path(file.path), i);
+      if ((read_by_a_stage.count(canonical_path(results[i].path)) == 0) == (top == 1))
+        for (const auto& layer : layers[i]) owners.try_emplace(layer, i);
+  for (std::size_t i = 0; i < results.size(); ++i)
+    for (const fix::FixedFile& file : results[i].files) owners.try_emplace(canonical_path(file.path), i);
   return owners;
 }
 
@@ -151,6 +166,9 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
     return failed ? kExitError : any_diff ? kExitFindings : kExitClean;
   }
   std::erase_if(remaining, [](const FileReport& r) { return r.error.has_value(); });
+  // What is left, judged as a check judges it: a layer's findings alone folded into its stage's.
+  judge_layers_in_stage_context(remaining);
+  drop_repeated_findings(remaining);
   write_report(remaining, run_problems);
   if (failed) return kExitError;
   return findings_status(remaining, options.fail_on);

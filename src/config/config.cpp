@@ -23,8 +23,8 @@ class Loader {
   void load(const toml::table& root) {
     for (const auto& [key, node] : root) {
       const std::string_view name = key.str();
-      if (name == "select") settings_.selection.select = rule_patterns(node, name);
-      else if (name == "ignore") settings_.selection.ignore = rule_patterns(node, name);
+      if (name == "select") set_patterns(settings_.selection, true, rule_patterns(node, name));
+      else if (name == "ignore") set_patterns(settings_.selection, false, rule_patterns(node, name));
       else if (name == "extend-select") append(extend_select_, rule_patterns(node, name));
       else if (name == "extend-ignore") append(extend_ignore_, rule_patterns(node, name));
       else if (name == "per-file-ignores" || name == "extend-per-file-ignores") per_file_ignores(table(node, name), name);
@@ -36,12 +36,12 @@ class Loader {
       else unknown(key, "");
     }
     // After the loop: `extend-select` adds to `select` wherever the two stand in the file.
-    extend(settings_.selection.select, extend_select_, true);
-    extend(settings_.selection.ignore, extend_ignore_, false);
+    extend(settings_.selection, true, extend_select_);
+    extend(settings_.selection, false, extend_ignore_);
   }
 
  private:
-  std::vector<std::string> extend_select_, extend_ignore_;
+  RulePatterns extend_select_, extend_ignore_;
   FileSelectionConfig* files_;  // read only when asked for (nullptr: validated, not kept)
   std::filesystem::path base_;  // the configuration's directory, absolute
 
@@ -93,16 +93,16 @@ class Loader {
     fail(node, fmt::format("'{}' must be one of {}, got \"{}\"", key, list, value));
   }
 
-  std::vector<std::string> rule_patterns(const toml::node& node, std::string_view key) const {
+  RulePatterns rule_patterns(const toml::node& node, std::string_view key) const {
     const auto* array = node.as_array();
     if (!array) fail(node, fmt::format("'{}' must be an array of rule ids or globs", key));
-    std::vector<std::string> patterns;
+    RulePatterns patterns;
     for (const auto& item : *array) {
       std::string pattern = string(item, key);
       bool matched = false;
       for (const RuleInfo* rule : rules::catalog()) matched = matched || glob_match(pattern, rule->id);
       if (!matched) fail(item, fmt::format("'{}' matches no rule", pattern));
-      patterns.push_back(std::move(pattern));
+      patterns.push_back({std::move(pattern), origin(item)});
     }
     return patterns;
   }
@@ -129,7 +129,7 @@ class Loader {
     else files.extend_exclude = std::move(patterns);
   }
 
-  static void append(std::vector<std::string>& to, std::vector<std::string> more) {
+  static void append(RulePatterns& to, RulePatterns more) {
     to.insert(to.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
   }
 
@@ -140,7 +140,8 @@ class Loader {
       if (glob.str().empty()) fail(node, fmt::format("{}: the file glob is empty", table_name));
       PerFileIgnore entry;
       entry.glob = std::string(glob.str());
-      entry.rules = rule_patterns(node, fmt::format("{}.\"{}\"", table_name, glob.str()));
+      for (auto& rule : rule_patterns(node, fmt::format("{}.\"{}\"", table_name, glob.str())))
+        entry.rules.push_back(std::move(rule.value));
       entry.origin = origin(node);
       settings_.per_file_ignores.push_back(std::move(entry));
     }
@@ -230,10 +231,36 @@ std::string ConfigError::to_string() const {
   return line ? fmt::format("{}:{}:{}: {}", path, line, column, message) : fmt::format("{}: {}", path, message);
 }
 
-void extend(std::vector<std::string>& list, const std::vector<std::string>& more, bool is_select) {
+namespace {
+
+void add_patterns(RuleSelection& selection, bool is_select, const RulePatterns& patterns) {
+  auto& list = is_select ? selection.select : selection.ignore;
+  auto& origins = is_select ? selection.select_origins : selection.ignore_origins;
+  for (const auto& pattern : patterns) {
+    list.push_back(pattern.value);
+    origins.emplace(pattern.value, pattern.origin);
+  }
+}
+
+}  // namespace
+
+void set_patterns(RuleSelection& selection, bool is_select, const RulePatterns& patterns) {
+  (is_select ? selection.select : selection.ignore).clear();
+  (is_select ? selection.select_origins : selection.ignore_origins).clear();
+  add_patterns(selection, is_select, patterns);
+}
+
+void extend(RuleSelection& selection, bool is_select, const RulePatterns& more) {
   if (more.empty()) return;
-  if (is_select && list.empty()) list.push_back("*");
-  list.insert(list.end(), more.begin(), more.end());
+  if (is_select && selection.select.empty())
+    add_patterns(selection, true, {{"*", "default (every rule), extended"}});
+  add_patterns(selection, is_select, more);
+}
+
+RulePatterns patterns_from(const std::vector<std::string>& patterns, const std::string& origin) {
+  RulePatterns out;
+  for (const auto& pattern : patterns) out.push_back({pattern, origin});
+  return out;
 }
 
 namespace {

@@ -26,9 +26,15 @@ struct ConfigError {
 std::optional<ConfigError> load(const std::string& path, Settings& settings, const std::string& display_path = "",
                                 FileSelectionConfig* files = nullptr);
 
+// Rule patterns with where each was given.
+using RulePatterns = std::vector<Configured<std::string>>;
+// Replaces the select (is_select) or ignore list of `selection` with `patterns`.
+void set_patterns(RuleSelection& selection, bool is_select, const RulePatterns& patterns);
 // Adds `more` to a select or ignore list. Extending an empty select list (every rule)
 // keeps every rule: it becomes `*` plus `more`.
-void extend(std::vector<std::string>& list, const std::vector<std::string>& more, bool is_select);
+void extend(RuleSelection& selection, bool is_select, const RulePatterns& more);
+// `patterns` all given at `origin` (a command-line flag).
+RulePatterns patterns_from(const std::vector<std::string>& patterns, const std::string& origin);
 
 // The same for configuration text already in memory; `path` names it in errors.
 std::optional<ConfigError> load_text(std::string_view text, const std::string& path, Settings& settings,

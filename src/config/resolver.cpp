@@ -10,10 +10,10 @@ const Settings& SettingsResolver::load(const std::string& config_path, std::opti
   if (it != by_config_.end()) return *it->second;
   auto settings = std::make_unique<Settings>();
   if (!config_path.empty()) error = config::load(config_path, *settings);
-  if (overrides_.select) settings->selection.select = *overrides_.select;
-  if (overrides_.ignore) settings->selection.ignore = *overrides_.ignore;
-  extend(settings->selection.select, overrides_.extend_select, true);
-  extend(settings->selection.ignore, overrides_.extend_ignore, false);
+  if (overrides_.select) set_patterns(settings->selection, true, patterns_from(*overrides_.select, "--select"));
+  if (overrides_.ignore) set_patterns(settings->selection, false, patterns_from(*overrides_.ignore, "--ignore"));
+  extend(settings->selection, true, patterns_from(overrides_.extend_select, "--extend-select"));
+  extend(settings->selection, false, patterns_from(overrides_.extend_ignore, "--extend-ignore"));
   if (overrides_.timesteps_per_second)
     settings->simulation.timesteps_per_second = Configured<double>{*overrides_.timesteps_per_second, "--timesteps-per-second"};
   if (overrides_.position_iterations)

@@ -15,6 +15,9 @@ namespace assetlint {
 struct RuleSelection {
   std::vector<std::string> select;
   std::vector<std::string> ignore;
+  // Where each pattern was set ("asset-lint.toml:3", "--extend-ignore"), for --show-settings;
+  // the first place a pattern was given wins.
+  std::map<std::string, std::string, std::less<>> select_origins, ignore_origins;
   bool enabled(std::string_view rule_id) const;
 };
 

@@ -409,4 +409,21 @@ std::optional<double> Articulation::inertia_about_axis(const Body& body, const J
   return direction.dot(body.inertia * direction) + body.mass * across.squaredNorm();
 }
 
+namespace {
+thread_local SharedArticulationScope* open_scope = nullptr;
+}  // namespace
+
+SharedArticulationScope::SharedArticulationScope(const Asset& asset) : asset_(asset), enclosing_(open_scope) {
+  open_scope = this;
+}
+
+SharedArticulationScope::~SharedArticulationScope() { open_scope = enclosing_; }
+
+std::shared_ptr<const Articulation> shared_articulation(const Asset& asset) {
+  SharedArticulationScope* scope = open_scope;
+  if (scope == nullptr || &scope->asset_ != &asset) return std::make_shared<const Articulation>(asset);
+  if (!scope->articulation_) scope->articulation_ = std::make_shared<const Articulation>(asset);
+  return scope->articulation_;
+}
+
 }  // namespace assetlint::physics

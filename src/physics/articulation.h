@@ -4,6 +4,7 @@
 // world, and each movable joint's drive row sees the articulated inertia 1/r, with
 // r = (M⁻¹)ᵢᵢ of the joint-space mass matrix M (armature on its diagonal, mimic rows aside).
 #include <Eigen/Geometry>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -100,5 +101,25 @@ class Articulation {
 
 // The tree's free-root convention for an asset's format.
 Articulation::FreeRoot default_free_root(const Asset& asset);
+
+// While a scope is open on this thread, shared_articulation(asset) builds the asset's
+// Articulation (default free root) once and hands the same one to every caller: the rules
+// of one lint pass would otherwise build it five times. The asset must not change while
+// the scope is open. Outside a scope, or for another asset, each call builds a new one.
+class SharedArticulationScope {
+ public:
+  explicit SharedArticulationScope(const Asset& asset);
+  ~SharedArticulationScope();
+  SharedArticulationScope(const SharedArticulationScope&) = delete;
+  SharedArticulationScope& operator=(const SharedArticulationScope&) = delete;
+
+ private:
+  friend std::shared_ptr<const Articulation> shared_articulation(const Asset& asset);
+  const Asset& asset_;
+  std::shared_ptr<const Articulation> articulation_;
+  SharedArticulationScope* enclosing_;
+};
+
+std::shared_ptr<const Articulation> shared_articulation(const Asset& asset);
 
 }  // namespace assetlint::physics

@@ -17,6 +17,7 @@
 #include "formats/mjcf/mjcf_reader.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
+#include "physics/articulation.h"
 #include "pipeline/suppressions.h"
 #include "rules/registry.h"
 
@@ -79,6 +80,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
   if (result.usable) {
     config::apply_drive_settings(result.asset, settings);
+    const physics::SharedArticulationScope shared_articulation(result.asset);
     for (const Rule* rule : rules::checks()) {
       if (!settings.selection.enabled(rule->info().id)) continue;
       Reporter reporter(rule->info(), diagnostics);

@@ -15,6 +15,17 @@ std::string quoted_list(const std::vector<std::string>& items) {
   return "[" + out + "]";
 }
 
+// Where each pattern came from, in the list's order.
+std::string origins(const std::vector<std::string>& patterns,
+                    const std::map<std::string, std::string, std::less<>>& origin_of) {
+  std::vector<std::string> out;
+  for (const auto& pattern : patterns) {
+    const auto it = origin_of.find(pattern);
+    out.push_back(it == origin_of.end() ? "set by the caller" : it->second);
+  }
+  return fmt::format("{}", fmt::join(out, ", "));
+}
+
 void line(std::ostream& out, const std::string& assignment, const std::string& origin) {
   out << fmt::format("{:<40} # {}\n", assignment, origin);
 }
@@ -33,9 +44,11 @@ void write_settings(std::ostream& out, const std::string& file, const Settings& 
   out << fmt::format("# checked tree (USD composition reads inside it): {}\n\n", checked_tree);
   const std::string config_origin = settings.config_path.empty() ? "default" : settings.config_path;
   line(out, "select = " + quoted_list(settings.selection.select),
-       settings.selection.select.empty() ? "default: every rule" : "configuration or --select/--extend-select");
+       settings.selection.select.empty() ? "default: every rule"
+                                         : origins(settings.selection.select, settings.selection.select_origins));
   line(out, "ignore = " + quoted_list(settings.selection.ignore),
-       settings.selection.ignore.empty() ? "default: none" : "configuration or --ignore/--extend-ignore");
+       settings.selection.ignore.empty() ? "default: none"
+                                         : origins(settings.selection.ignore, settings.selection.ignore_origins));
   std::vector<std::string> off;
   for (const RuleInfo* rule : rules::catalog())
     if (!settings.selection.enabled(rule->id)) off.emplace_back(rule->id);
