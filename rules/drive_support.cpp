@@ -26,7 +26,7 @@ std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   d.articulated = articulation_->inertia(joint);
   d.inertia_used = drive.type == DriveType::Acceleration ? 1.0 : d.inertia.value;
   if (drive.type != DriveType::Acceleration && d.inertia.known && d.inertia.link)
-    d.inertia_doubt = physics::inertia_doubt(asset_, *d.inertia.link, articulation_.sole_rotation_axis(*d.inertia.link));
+    d.inertia_doubt = physics::inertia_doubt(asset_, *d.inertia.link, articulation_->sole_rotation_axis(*d.inertia.link));
   d.rate = rate_;
   return d;
 }

@@ -112,7 +112,7 @@ class InertiaInvalid final : public Rule {
       double excess;  // how far outside its bound, as a factor
     };
     std::vector<Found> found;
-    const physics::Articulation articulation(asset);
+    const auto articulation = physics::shared_articulation(asset);
     for (const Link& link : asset.links) {
       const auto placed = where.find(&link);
       if (placed == where.end() || placed->second.role != Role::BodyStart || !link.inertial) continue;
@@ -120,7 +120,7 @@ class InertiaInvalid final : public Rule {
           std::find(already.begin(), already.end(), &link) != already.end())
         continue;
       const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link),
-                                             articulation.sole_rotation_axis(link));
+                                             articulation->sole_rotation_axis(link));
       if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
       const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;
       found.push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest});
