@@ -27,10 +27,17 @@ class DriveDampingRatio final : public Rule {
       const Drive& drive = *driven->drive;
       const double critical = physics::damping_for_ratio(1.0, driven->stiffness, inertia);
       const bool below = ratio < low;
+      // The guide's lighter link is the least the joint can move; on an arm's proximal joint
+      // the articulation moves far more. "Sluggish" only on the lighter link, and within the
+      // range on what the solver's row sees, is not a verdict to act on: info.
+      const bool articulation_disagrees =
+          !below && !driven->acceleration() && driven->articulated.known &&
+          physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value) <= high;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
-      Diagnostic& d = out.report(at, fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
+      Diagnostic& d = out.report(at, articulation_disagrees ? Severity::Info : info_.default_severity,
+                                 fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
                                                  format_number(ratio, 3), below ? "below" : "above",
                                                  format_number(below ? low : high),
                                                  below ? "oscillates around its target" : "moves sluggishly"));
@@ -41,16 +48,21 @@ class DriveDampingRatio final : public Rule {
       if (!driven->acceleration()) {
         std::string both = fmt::format("Inertias: {}.", driven->inertias_text());
         if (driven->articulated.known)
-          both += fmt::format(" On the articulation dr = {}.",
-                              format_number(physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value), 3));
+          both += fmt::format(" On the articulation dr = {}{}.",
+                              format_number(physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value), 3),
+                              articulation_disagrees
+                                  ? fmt::format(", within {}: the joint moves more than the lighter link, so the "
+                                                "verdict is an info",
+                                                format_number(high))
+                                  : "");
         d.note(std::move(both));
       }
-      if (driven->inertia_doubt.empty())
+      if (driven->inertia_doubt.empty() && !articulation_disagrees)
         d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
                            describe_gain(drive.damping, critical, damping_unit(joint))));
       if (!driven->inertia_doubt.empty()) {
         d.note(fmt::format("No fix is offered: {}, so a damping computed from it would be as wrong.", driven->inertia_doubt));
-      } else if (drive.damping && drive.damping->span.valid()) {
+      } else if (!articulation_disagrees && drive.damping && drive.damping->span.valid()) {
         d.fix = Fix{fmt::format("set damping {} for a damping ratio of 1", describe_gain(drive.damping, critical, damping_unit(joint))),
                     Applicability::Unsafe, {replace_value(*drive.damping, critical, 4)}};
       }
