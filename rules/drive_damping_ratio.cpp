@@ -30,9 +30,10 @@ class DriveDampingRatio final : public Rule {
       // The guide's lighter link is the least the joint can move; on an arm's proximal joint
       // the articulation moves far more. "Sluggish" only on the lighter link, and within the
       // range on what the solver's row sees, is not a verdict to act on: info.
-      const bool articulation_disagrees =
-          !below && !driven->acceleration() && driven->articulated.known &&
-          physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value) <= high;
+      const bool on_articulation = driven->articulated.known;
+      const double articulated_ratio =
+          on_articulation ? physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value) : 0.0;
+      const bool articulation_disagrees = !below && !driven->acceleration() && on_articulation && articulated_ratio <= high;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
@@ -47,9 +48,8 @@ class DriveDampingRatio final : public Rule {
                          format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
       if (!driven->acceleration()) {
         std::string both = fmt::format("Inertias: {}.", driven->inertias_text());
-        if (driven->articulated.known)
-          both += fmt::format(" On the articulation dr = {}{}.",
-                              format_number(physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value), 3),
+        if (on_articulation)
+          both += fmt::format(" On the articulation dr = {}{}.", format_number(articulated_ratio, 3),
                               articulation_disagrees
                                   ? fmt::format(", within {}: the joint moves more than the lighter link, so the "
                                                 "verdict is an info",

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "util/numbers.h"
 
@@ -95,6 +96,12 @@ OptQuantity range_bound(const Attr& a, const char* name, Unit unit, double scale
   return values.quantity(a, name, unit, i, sign * scale);
 }
 
+// The asset's name index is built after the actuators are read: look the joint up directly.
+Joint* joint_named(Asset& asset, std::string_view name) {
+  auto it = std::find_if(asset.joints.begin(), asset.joints.end(), [&](const Joint& j) { return j.name.text == name; });
+  return it == asset.joints.end() ? nullptr : &*it;
+}
+
 }  // namespace
 
 void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler,
@@ -116,8 +123,7 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   if (!joint_name) {
     if (const char* tendon = el->Attribute("tendon"); tendon && tendons.contains(tendon))
       for (const std::string& moved : tendons.at(tendon))
-        for (Joint& j : asset.joints)
-          if (j.name.text == moved) j.actuation = Actuation::Actuated;
+        if (Joint* j = joint_named(asset, moved)) j->actuation = Actuation::Actuated;
     for (const char* other : {"tendon", "site", "body", "cranksite"})
       if (const char* target = el->Attribute(other)) {
         values.unsupported(values.element_span(el), fmt::format("{} acts through {} '{}'", label, other, target))
@@ -127,9 +133,8 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
     values.error(values.element_span(el), fmt::format("{} names no joint, tendon, site or body", label));
     return;
   }
-  auto joint = std::find_if(asset.joints.begin(), asset.joints.end(),
-                            [&](const Joint& j) { return j.name.text == joint_name; });
-  if (joint == asset.joints.end()) {
+  Joint* joint = joint_named(asset, joint_name);
+  if (!joint) {
     values.error(values.value_span(own(el, "joint"), "joint"), fmt::format("{} names unknown joint '{}'", label, joint_name));
     return;
   }
