@@ -57,6 +57,24 @@ std::vector<std::string> mutants(const std::string& text, std::size_t max_attrib
   for (const auto& tag : scan.tags)
     for (const auto& a : tag.attributes) attributes.emplace_back(&tag, &a);
   std::vector<std::string> out;
+  // Comments holding what urdfdom's verdict must ignore ('&', UTF-8, bytes that are not
+  // UTF-8) and declarations spaced as xacro writes them.
+  if (!scan.tags.empty()) {
+    const std::size_t after_root = scan.tags.front().end;
+    for (const char* comment : {"<!-- Copyright \xc2\xa9 A & B <x> -->", "<!-- \xff\xfe -->", "<!--x--->"}) {
+      std::string m = text;
+      m.insert(after_root, comment);
+      out.push_back(std::move(m));
+    }
+  }
+  if (text.starts_with("<?xml version=\"1.0\"")) {
+    for (const char* declaration : {"<?xml version = \"1.0\" ?>", "<?xml version=\"1.0\"\n  encoding=\"UTF-8\"?>",
+                                    "<?xml version='1.0'?>", "<?xml version = \"1.1\" ?>"}) {
+      std::string m = text;
+      m.replace(0, text.find("?>") + 2, declaration);
+      out.push_back(std::move(m));
+    }
+  }
   const std::size_t step = std::max<std::size_t>(1, attributes.size() / std::max<std::size_t>(1, max_attributes));
   for (std::size_t i = 0; i < attributes.size(); i += step) {
     const auto& [tag, a] = attributes[i];

@@ -14,21 +14,32 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-// `<?xml version="1.0" encoding="UTF-8" standalone="yes"?>` with attributes among these
-// three, double-quoted, separated by single spaces: the declarations both parsers agree on.
+bool xml_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+// `<?xml version = "1.0" encoding="UTF-8" standalone="yes" ?>` with attributes among these
+// three, double-quoted, whitespace around '=' and between attributes: the declarations both
+// parsers agree on (tinyxml 1 reads each attribute as it reads an element's).
 bool plain_declaration(std::string_view text) {
   if (!text.starts_with("<?xml")) return false;
   std::size_t i = 5;
+  auto skip_space = [&] {
+    const std::size_t start = i;
+    while (i < text.size() && xml_space(text[i])) ++i;
+    return i > start;
+  };
   for (;;) {
+    const bool spaced = skip_space();
     if (text.compare(i, 2, "?>") == 0) return true;
-    if (i >= text.size() || text[i] != ' ') return false;
-    ++i;
-    if (text.compare(i, 2, "?>") == 0) return true;
-    std::size_t name_end = text.find('=', i);
-    if (name_end == std::string_view::npos) return false;
+    if (!spaced) return false;
+    std::size_t name_end = i;
+    while (name_end < text.size() && std::isalpha(static_cast<unsigned char>(text[name_end]))) ++name_end;
     const std::string_view name = text.substr(i, name_end - i);
     if (name != "version" && name != "encoding" && name != "standalone") return false;
-    i = name_end + 1;
+    i = name_end;
+    skip_space();
+    if (i >= text.size() || text[i] != '=') return false;
+    ++i;
+    skip_space();
     if (i >= text.size() || text[i] != '"') return false;
     const std::size_t close = text.find('"', i + 1);
     if (close == std::string_view::npos) return false;
@@ -40,8 +51,24 @@ bool plain_declaration(std::string_view text) {
   }
 }
 
+// Whether `text` is well-formed UTF-8 (complete sequences, no overlong lead bytes).
+bool valid_utf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t length = c < 0x80 ? 1 : c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3
+                               : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    if (length == 0 || i + length > text.size()) return false;
+    for (std::size_t k = 1; k < length; ++k)
+      if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return false;
+    i += length;
+  }
+  return true;
+}
+
 // Bytes both XML parsers read the same way: printable ASCII and line breaks, no entity
 // references, no DOCTYPE or CDATA, no processing instruction but a leading declaration.
+// Comments may hold anything in UTF-8 ('&', '©'): both parsers skip them to the first "-->"
+// byte by byte.
 bool plain_markup(std::string_view document) {
   // 0: ordinary, 1: never plain, 2: '<' (look at what follows).
   static const auto kinds = [] {
@@ -56,7 +83,15 @@ bool plain_markup(std::string_view document) {
     if (kind == 0) continue;
     if (kind == 1) return false;
     if (i + 1 >= document.size()) continue;
-    if (document[i + 1] == '!' && document.compare(i, 4, "<!--") != 0) return false;
+    if (document.compare(i, 4, "<!--") == 0) {
+      const std::size_t end = document.find("-->", i + 4);
+      if (end == std::string_view::npos || !valid_utf8(document.substr(i + 4, end - (i + 4)))) return false;
+      for (std::size_t k = i + 4; k < end; ++k)
+        if (static_cast<unsigned char>(document[k]) < 0x20 && !xml_space(document[k])) return false;
+      i = end + 2;
+      continue;
+    }
+    if (document[i + 1] == '!') return false;
     if (document[i + 1] == '?' && !(i == first && plain_declaration(document.substr(i)))) return false;
   }
   return true;
