@@ -124,6 +124,12 @@ class ArmatureExcessive final : public Rule {
                          format_number(without->natural_frequency, 4),
                          without->articulated ? "the articulation's own inertia" : "the lighter link",
                          format_number(c.driven->rate.frequency_bound(), 4), c.driven->rate.step_text()));
+      const physics::SimulationRate& rate = c.driven->rate;
+      if (rate.solver == physics::Solver::MuJoCo && rate.integrator != physics::MujocoIntegrator::ImplicitFast &&
+          physics::damps_stably(physics::MujocoIntegrator::ImplicitFast, rate.h(),
+                                mujoco_servo(*c.driven, without->inertia)))
+        d.note("Under <option integrator=\"implicitfast\">, which takes the actuator's kv implicitly, the drive would be "
+               "damped stably without the armature.");
       drive_effect(c, d);
       return;
     }
@@ -131,8 +137,9 @@ class ArmatureExcessive final : public Rule {
                                fmt::format("armature {} of {} is {}× the lighter link's inertia (threshold {}×)", amount,
                                            short_name(joint), times, format_number(c.factor)));
     d.note(link_text(c));
-    d.note(c.driven ? "Its drive would stay within the natural-frequency bound without it, so it models a motor rather "
-                      "than steadying the drive; declare the motor to record that."
+    d.note(c.driven ? "Its drive would be steady without it (within the natural-frequency bound, or damped stably by "
+                      "MuJoCo's integrator), so it models a motor rather than steadying the drive; declare the motor to "
+                      "record that."
                     : "No spring drive depends on it, so it models a motor rather than steadying a drive; declare the "
                       "motor to record that.");
     drive_effect(c, d);
@@ -148,6 +155,11 @@ class ArmatureExcessive final : public Rule {
     const double inertia = articulated ? c.driven->articulated.value - c.armature : c.inertia.link_inertia;
     const double without = physics::natural_frequency(c.driven->stiffness, inertia);
     if (without <= c.driven->rate.frequency_bound()) return std::nullopt;
+    // Past the bound, MuJoCo's integrator may still damp it stably without the armature.
+    const physics::SimulationRate& rate = c.driven->rate;
+    if (rate.solver == physics::Solver::MuJoCo &&
+        physics::damps_stably(rate.integrator, rate.h(), mujoco_servo(*c.driven, inertia)))
+      return std::nullopt;
     return Crutch{without, inertia, articulated};
   }
 

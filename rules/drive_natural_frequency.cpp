@@ -1,7 +1,11 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
+#include "physics/servo_step.h"
 #include "rules/all_rules.h"
 #include "rules/drive_support.h"
 #include "rules/support.h"
@@ -63,6 +67,19 @@ class DriveNaturalFrequency final : public Rule {
       return;
     }
 
+    const std::optional<MujocoStep> mujoco = mujoco_verdict(driven);
+    if (mujoco && mujoco->damps_stably()) {
+      Diagnostic& d = out.report(
+          at, Severity::Info,
+          fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, damped stably by {}",
+                      short_name(joint), format_number(nf, 4), format_number(bound, 4),
+                      physics::integrator_name(rate.integrator)));
+      d.note(derivation(driven, nf));
+      d.note(bound_text(rate, h_nf));
+      for (const std::string& note : mujoco->notes()) d.note(note);
+      return;
+    }
+
     Diagnostic& d = out.report(
         at, Severity::Error,
         fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
@@ -70,6 +87,8 @@ class DriveNaturalFrequency final : public Rule {
                     format_number(h_nf, 3)));
     d.note(derivation(driven, nf));
     d.note(bound_text(rate, h_nf));
+    if (mujoco)
+      for (const std::string& note : mujoco->notes()) d.note(note);
     if (rate.solver == physics::Solver::PGS)
       d.note("Under TGS the same drive would be judged against rate × position iterations: PGS builds the drive "
              "row with the whole frame.");
@@ -125,6 +144,85 @@ class DriveNaturalFrequency final : public Rule {
       d.fix = Fix{fmt::format("set stiffness {} and damping {}", describe_gain(drive.stiffness, proposed, k_unit),
                               describe_gain(drive.damping, damping, d_unit)),
                   Applicability::Unsafe, std::move(edits)};
+  }
+
+  // The drive as MuJoCo's integrator steps it (physics/servo_step.h): a spring past
+  // h·nf = 1 that an implicitly solved damper holds overdamped does not ring and does
+  // not diverge; its response is the slow mode, which the step resolves.
+  struct MujocoStep {
+    const DrivenJoint* driven;
+    physics::Servo servo;
+    std::string inertia_label;  // "the guide's I", "the articulation's I"
+    double damping_ratio;
+    double slow_rate;  // rad/s
+
+    physics::StepMap map(physics::MujocoIntegrator integrator) const {
+      return physics::servo_step(integrator, driven->rate.h(), servo);
+    }
+    bool damps_stably(physics::MujocoIntegrator integrator) const {
+      return physics::damps_stably(integrator, driven->rate.h(), servo);
+    }
+    bool damps_stably() const { return damps_stably(driven->rate.integrator); }
+
+    std::string damping_text(physics::MujocoIntegrator integrator) const {
+      const Unit unit = damping_unit(*driven->joint);
+      const double implicit = physics::implicit_damping(integrator, servo);
+      const double explicit_part = physics::explicit_damping(integrator, servo);
+      if (implicit > 0 && explicit_part > 0)
+        return fmt::format("{} of the damping implicitly and {} explicitly", describe(implicit, unit, 3),
+                           describe(explicit_part, unit, 3));
+      if (implicit > 0) return fmt::format("the damping ({}) implicitly", describe(implicit, unit, 3));
+      if (explicit_part > 0) return fmt::format("the damping ({}) explicitly", describe(explicit_part, unit, 3));
+      return "no damping";
+    }
+
+    std::vector<std::string> notes() const {
+      const physics::SimulationRate& rate = driven->rate;
+      const physics::StepMap step = map(rate.integrator);
+      std::vector<std::string> out;
+      out.push_back(fmt::format(
+          "{} ({}) takes the spring explicitly and {}: one step maps (q, q̇) with spectral radius {} on {} = {} {}, "
+          "so the spring's unresolved mode {}.",
+          physics::integrator_name(rate.integrator), rate.integrator_origin, damping_text(rate.integrator),
+          format_number(step.spectral_radius(), 3), inertia_label, format_number(servo.inertia, 3),
+          driven->inertia_unit(), step.stable() ? "decays instead of growing" : "grows every step"));
+      if (step.stable())
+        out.push_back(fmt::format("Damping ratio ζ = {} on {}: {}; the slowest mode decays at {} rad/s, h × that rate = {}.",
+                                  format_number(damping_ratio, 3), inertia_label,
+                                  damping_ratio >= 1 ? "overdamped, the response is that slow mode"
+                                                     : "underdamped, it rings at a frequency the step does not resolve",
+                                  format_number(slow_rate, 3), format_number(rate.h() * slow_rate, 3)));
+      // The other choice of integrator, when it flips the verdict.
+      const bool implicit_now = rate.integrator == physics::MujocoIntegrator::Implicit ||
+                                rate.integrator == physics::MujocoIntegrator::ImplicitFast;
+      const auto other = implicit_now ? physics::MujocoIntegrator::Euler : physics::MujocoIntegrator::ImplicitFast;
+      const physics::StepMap alternative = map(other);
+      if (damps_stably(other) != damps_stably())
+        out.push_back(fmt::format("Under {}, which takes {}, the same drive would {} (spectral radius {}){}.",
+                                  implicit_now ? "MuJoCo's default Euler integrator" : "<option integrator=\"implicitfast\">",
+                                  damping_text(other), alternative.stable() ? "decay" : "diverge",
+                                  format_number(alternative.spectral_radius(), 3),
+                                  alternative.stable() ? "" : ": keep the implicit integrator"));
+      return out;
+    }
+  };
+
+  static std::optional<MujocoStep> mujoco_step(const DrivenJoint& driven, double inertia, std::string inertia_label) {
+    if (driven.rate.solver != physics::Solver::MuJoCo || driven.acceleration() || !(inertia > 0)) return std::nullopt;
+    const physics::Servo servo = mujoco_servo(driven, inertia);
+    const double total = servo.joint_damping + servo.actuator_damping;
+    return MujocoStep{&driven, servo, std::move(inertia_label),
+                      physics::damping_ratio(total, servo.stiffness, servo.inertia),
+                      physics::slowest_decay_rate(servo)};
+  }
+
+  // Judged on the guide's I and, when known, on the articulation's own: the verdict is the
+  // first of the two that does not damp stably, else the guide's.
+  static std::optional<MujocoStep> mujoco_verdict(const DrivenJoint& driven) {
+    auto guide = mujoco_step(driven, driven.inertia_used, "the guide's I");
+    if (!guide || !guide->damps_stably() || !driven.articulated.known) return guide;
+    auto articulation = mujoco_step(driven, driven.articulated.value, "the articulation's I");
+    return articulation && !articulation->damps_stably() ? articulation : guide;
   }
 
   static std::string derivation(const DrivenJoint& driven, double nf) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "physics/inertia.h"
@@ -106,6 +107,16 @@ std::string describe_gain(const OptQuantity& q, double model_value, Unit physx_u
 std::optional<double> target_delta(const Joint& joint, const Settings& settings) {
   if (!is_angular(joint.type)) return std::nullopt;
   return radians_from_degrees(settings.gripper.target_delta_deg.value);
+}
+
+physics::Servo mujoco_servo(const DrivenJoint& driven, double inertia) {
+  physics::Servo servo;
+  servo.inertia = inertia;
+  servo.stiffness = driven.stiffness;
+  const Joint& joint = *driven.joint;
+  servo.joint_damping = joint.joint_damping ? std::max(0.0, joint.joint_damping->value) : 0.0;
+  servo.actuator_damping = std::max(0.0, driven.damping - servo.joint_damping);
+  return servo;
 }
 
 }  // namespace assetlint::rules

@@ -9,6 +9,7 @@
 #include "physics/articulation.h"
 #include "physics/drive.h"
 #include "physics/drive_row.h"
+#include "physics/servo_step.h"
 
 namespace assetlint::rules {
 
@@ -52,6 +53,10 @@ class DriveModel {
   std::shared_ptr<const physics::Articulation> articulation_;
   physics::SimulationRate rate_;
 };
+
+// The drive as MuJoCo steps it, on `inertia`: the reader folds the joint's own damping into
+// the drive's, and MuJoCo's Euler integrator treats the two apart.
+physics::Servo mujoco_servo(const DrivenJoint& driven, double inertia);
 
 // "'finger_joint'": the joint's name without its USD prim path, for short primary messages.
 std::string short_name(const Joint& joint);

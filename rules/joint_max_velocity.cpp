@@ -111,9 +111,8 @@ class JointMaxVelocity final : public Rule {
 
   // URDF: velocity="100" on every joint is a value nobody measured. Once per file.
   static bool placeholder(const Context& c, const Quantity& v) {
-    if (c.usd || !is_power_of_ten(v.value, 2)) return false;
+    if (!velocity_placeholder_on_every_joint(c.asset, c.joint, *c.velocities, c.movable_joints)) return false;
     const std::size_t sharing = c.velocities->others(c.joint);
-    if (sharing == 0 || sharing + 1 < c.movable_joints) return false;
     Diagnostic& d = c.out.report(v.span, Severity::Info,
                                  fmt::format("velocity {} on every joint ({}) looks like a placeholder", describe(v),
                                              sharing + 1));

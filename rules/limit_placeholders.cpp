@@ -33,6 +33,13 @@ std::size_t movable_joint_count(const Asset& asset) {
   return count;
 }
 
+bool velocity_placeholder_on_every_joint(const Asset& asset, const Joint& joint, const SharedValues& velocities,
+                                         std::size_t movable_joints) {
+  if (asset.format != SourceFormat::Urdf || !joint.velocity || !is_power_of_ten(joint.velocity->value, 2)) return false;
+  const std::size_t sharing = velocities.others(joint);
+  return sharing > 0 && sharing + 1 >= movable_joints;
+}
+
 bool has_active_drive(const Joint& joint) {
   return joint.drive && ((joint.drive->stiffness && joint.drive->stiffness->value > 0) ||
                          (joint.drive->damping && joint.drive->damping->value > 0));

@@ -30,6 +30,11 @@ class SharedValues {
 // Movable single-DOF joints in the asset.
 std::size_t movable_joint_count(const Asset& asset);
 
+// A URDF velocity limit that is a round 10^n (n ≥ 2) on every movable joint: joint-max-velocity
+// reports it once per file as a placeholder; other rules defer to that finding.
+bool velocity_placeholder_on_every_joint(const Asset& asset, const Joint& joint, const SharedValues& velocities,
+                                         std::size_t movable_joints);
+
 // A drive with stiffness or damping > 0 (applied in USD, or from [drives.<joint>]).
 bool has_active_drive(const Joint& joint);
 

@@ -8,6 +8,7 @@
 
 #include "physics/gripper.h"
 #include "rules/all_rules.h"
+#include "rules/limit_placeholders.h"
 #include "rules/support.h"
 #include "util/numbers.h"
 
@@ -65,6 +66,8 @@ class UnitsVelocityImplausible final : public Rule {
     const double placeholder = rule_option(info_, settings, "placeholder_velocity");
 
     // One verdict per value: identical limits in one file were typed once and copied.
+    const SharedValues velocities(asset, &Joint::velocity);
+    const std::size_t movable_joints = movable_joint_count(asset);
     std::map<std::pair<double, Unit>, std::vector<Verdict>> by_value;
     std::vector<std::pair<double, Unit>> order;
     for (const Joint& joint : asset.joints) {
@@ -84,6 +87,8 @@ class UnitsVelocityImplausible final : public Rule {
         // A mimic's own limit is mimic-max-velocity's verdict (Robotiq's 10000 deg/s): one per line.
         if (std::all_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.joint->is_mimic(); }))
           continue;
+        // The same round value on every joint is joint-max-velocity's one placeholder finding per file.
+        if (velocity_placeholder_on_every_joint(asset, *first.joint, velocities, movable_joints)) continue;
         Diagnostic& d = out.report(velocity.span, Severity::Info,
                                    fmt::format("velocity limit {} of {} is a placeholder, not a measured limit",
                                                describe(velocity), joint_label(*first.joint)));

@@ -172,6 +172,10 @@ TEST_CASE("MJCF: degrees are the default, hinges without a range are continuous"
   CHECK(r.asset.find_joint("float")->type == JointType::Floating);
   CHECK(r.asset.scene.timesteps_per_second->value == 500);
   CHECK_FALSE(r.asset.scene.timesteps_per_second->is_authored());
+  CHECK(r.asset.scene.integrator.empty());  // MuJoCo's default, Euler
+  const ReadResult fast = read("<mujoco><option integrator='implicitfast'/><worldbody/></mujoco>");
+  CHECK(fast.asset.scene.integrator == "implicitfast");
+  CHECK(fast.asset.scene.integrator_span.column == 29);
   CHECK_FALSE(r.asset.find_link("a")->inertial);  // MuJoCo derives it from geoms
 }
 
@@ -204,6 +208,8 @@ TEST_CASE("MJCF: errors carry file, line and column", "[mjcf]") {
   CHECK(located(read("<robot name='r'/>")) == "parse-error 0:1:1 not MJCF: the root element is <robot>, expected <mujoco>\n");
   CHECK(located(read("<mujoco><worldbody><body childclass='nope'/></worldbody></mujoco>")) ==
         "parse-error 0:1:38 unknown default class 'nope'\n");
+  CHECK(located(read("<mujoco>\n  <option integrator='Implicit'/><worldbody/></mujoco>")) ==
+        "parse-error 0:2:23 <option integrator>: expected Euler, RK4, implicit or implicitfast, found 'Implicit'\n");
   const ReadResult broken = read("<mujoco>\n  <worldbody>\n</mujoco>");
   CHECK_FALSE(broken.usable);
   REQUIRE_FALSE(broken.diagnostics.empty());

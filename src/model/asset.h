@@ -153,6 +153,8 @@ struct Scene {
   OptQuantity max_position_iterations;
   std::string solver;                // "TGS" / "PGS"; empty = unknown
   Span solver_span;
+  std::string integrator;            // MJCF <option integrator> keyword; empty = MuJoCo's default (Euler)
+  Span integrator_span;
 };
 
 // One parsed asset: the files it was read from and the robot they describe.

@@ -84,6 +84,11 @@ SimulationRate effective_simulation(const Asset& asset, const Settings& settings
     rate.solver = settings.simulation.solver->value == "PGS" ? Solver::PGS : Solver::TGS;
     rate.solver_origin = settings.simulation.solver->origin;
   }
+  if (!asset.scene.integrator.empty())
+    if (auto integrator = parse_integrator(asset.scene.integrator)) {
+      rate.integrator = *integrator;
+      rate.integrator_origin = where(asset.scene.integrator_span);
+    }
   return rate;
 }
 

@@ -9,6 +9,7 @@
 
 #include "engine/settings.h"
 #include "model/asset.h"
+#include "physics/servo_step.h"
 
 namespace assetlint::physics {
 
@@ -31,6 +32,9 @@ struct SimulationRate {
   std::optional<double> max_position_iterations;
   Solver solver = Solver::TGS;
   std::string solver_origin = "default";
+  // MuJoCo only: which integrator takes the step (<option integrator>, default Euler).
+  MujocoIntegrator integrator = MujocoIntegrator::Euler;
+  std::string integrator_origin = "MuJoCo's default";
 
   double dt() const { return 1.0 / timesteps_per_second; }  // s, one frame
   // N: the position iterations the solver runs, the articulation's count within the

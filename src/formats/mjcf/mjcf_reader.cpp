@@ -9,6 +9,7 @@
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_values.h"
 #include "formats/xml/xml_scanner.h"
+#include "physics/servo_step.h"
 #include "util/numbers.h"
 
 namespace assetlint::mjcf {
@@ -53,7 +54,7 @@ class Reader {
       if (std::string_view(el->Name()) == "compiler") read_compiler(el);
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "default") defaults_.read(sources_, el, result_.diagnostics);
-    read_timestep(sections);
+    read_options(sections);
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
     const FixedTendons tendons = read_fixed_tendons(sections);
@@ -111,7 +112,7 @@ class Reader {
     if (const char* g = el->Attribute("inertiafromgeom")) compiler_.inertiafromgeom = std::string(trim(g));
   }
 
-  void read_timestep(const std::vector<const XMLElement*>& sections) {
+  void read_options(const std::vector<const XMLElement*>& sections) {
     Scene& scene = result_.asset.scene;
     scene.solver = "MuJoCo";
     for (const XMLElement* el : sections) {
@@ -124,6 +125,16 @@ class Reader {
           continue;
         }
         scene.timesteps_per_second = q;
+      }
+      if (const char* integrator = el->Attribute("integrator")) {
+        const Span span = values_.value_span(own(el, "integrator"), "integrator");
+        if (!physics::parse_integrator(integrator))
+          values_.error(span, fmt::format("<option integrator>: expected Euler, RK4, implicit or implicitfast, found '{}'",
+                                          integrator));
+        else {
+          scene.integrator = integrator;
+          scene.integrator_span = span;
+        }
       }
     }
     if (!scene.timesteps_per_second)
