@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "physics/servo_step.h"
 #include "rules/all_rules.h"
 #include "rules/drive_support.h"
 #include "rules/support.h"
@@ -34,10 +35,18 @@ class DriveDampingRatio final : public Rule {
       const double articulated_ratio =
           on_articulation ? physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value) : 0.0;
       const bool articulation_disagrees = !below && !driven->acceleration() && on_articulation && articulated_ratio <= high;
+      // Past MuJoCo's 1/timestep a stiff servo steps steadily only because its damping is high
+      // and implicit (drive-natural-frequency): critical damping would undo that.
+      const physics::SimulationRate& rate = driven->rate;
+      const bool steadies_stiff_spring =
+          !below && !driven->acceleration() && rate.solver == physics::Solver::MuJoCo &&
+          rate.h() * physics::natural_frequency(driven->stiffness, inertia) > 1 &&
+          physics::damps_stably(rate.integrator, rate.h(), mujoco_servo(*driven, inertia));
+      const bool info_only = articulation_disagrees || steadies_stiff_spring;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
-      Diagnostic& d = out.report(at, articulation_disagrees ? Severity::Info : info_.default_severity,
+      Diagnostic& d = out.report(at, info_only ? Severity::Info : info_.default_severity,
                                  fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
                                                  format_number(ratio, 3), below ? "below" : "above",
                                                  format_number(below ? low : high),
@@ -57,12 +66,21 @@ class DriveDampingRatio final : public Rule {
                                   : "");
         d.note(std::move(both));
       }
-      if (driven->inertia_doubt.empty() && !articulation_disagrees)
+      if (steadies_stiff_spring) {
+        const physics::Servo servo = mujoco_servo(*driven, inertia);
+        d.note(fmt::format(
+            "Past MuJoCo's bound (h·nf = {} at {}), this damping is what lets {} step the spring steadily "
+            "(drive-natural-frequency); damping for ratio 1 would leave it ringing faster than the step resolves. "
+            "The joint follows its target with time constant {} s; to make it quicker, lower the stiffness first.",
+            format_number(rate.h() * physics::natural_frequency(driven->stiffness, inertia), 3), rate.step_text(),
+            physics::integrator_name(rate.integrator), format_number(1.0 / physics::slowest_decay_rate(servo), 3)));
+      }
+      if (driven->inertia_doubt.empty() && !info_only)
         d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
                            describe_gain(drive.damping, critical, damping_unit(joint))));
       if (!driven->inertia_doubt.empty()) {
         d.note(fmt::format("No fix is offered: {}, so a damping computed from it would be as wrong.", driven->inertia_doubt));
-      } else if (!articulation_disagrees && drive.damping && drive.damping->span.valid()) {
+      } else if (!info_only && drive.damping && drive.damping->span.valid()) {
         d.fix = Fix{fmt::format("set damping {} for a damping ratio of 1", describe_gain(drive.damping, critical, damping_unit(joint))),
                     Applicability::Unsafe, {replace_value(*drive.damping, critical, 4)}};
       }

@@ -202,6 +202,41 @@ TEST_CASE("MJCF: includes are read relative to the model, outside ones are skipp
         "layer-unresolved 0:4:16 include 'missing.xml' cannot be read: No such file or directory\n");
 }
 
+TEST_CASE("MJCF: a joint equality leads from its actuated side", "[mjcf]") {
+  const std::string model = R"(<mujoco><compiler angle="radian"/><worldbody><body name="base">
+      <body name="l"><joint name="left" type="slide" range="0 0.04"/></body>
+      <body name="r"><joint name="right" type="slide" range="0 0.02"/></body></body></worldbody>
+    <equality><joint joint1="left" joint2="right" polycoef="0.004 2 0 0 0"/></equality>
+    <actuator>ACTUATORS</actuator></mujoco>)";
+  const auto with = [&](const std::string& actuators) {
+    std::string text = model;
+    text.replace(text.find("ACTUATORS"), 9, actuators);
+    return read(text);
+  };
+  // Only joint1 actuated: joint2 follows it, q2 = (q1 − 0.004) / 2.
+  const ReadResult left_driven = with(R"(<position joint="left" kp="100"/>)");
+  REQUIRE(left_driven.usable);
+  CHECK_FALSE(left_driven.asset.find_joint("left")->mimic);
+  const Joint* right = left_driven.asset.find_joint("right");
+  REQUIRE(right->mimic);
+  CHECK(right->mimic->reference.text == "left");
+  CHECK_THAT(right->mimic->multiplier.value, WithinRel(0.5, 1e-12));
+  CHECK_THAT(right->mimic->offset.value, WithinRel(-0.002, 1e-12));
+  CHECK(right->mimic->reference.span.column == 30);
+  // joint2 actuated, or both, or neither: joint1 follows joint2, as written.
+  for (const std::string& actuators : {std::string(R"(<position joint="right" kp="100"/>)"),
+                                       std::string(R"(<position joint="left" kp="100"/><position joint="right" kp="100"/>)"),
+                                       std::string()}) {
+    const ReadResult r = with(actuators);
+    INFO(actuators);
+    const Joint* left = r.asset.find_joint("left");
+    REQUIRE(left->mimic);
+    CHECK(left->mimic->reference.text == "right");
+    CHECK(left->mimic->multiplier.value == 2);
+    CHECK_FALSE(r.asset.find_joint("right")->mimic);
+  }
+}
+
 TEST_CASE("MJCF: errors carry file, line and column", "[mjcf]") {
   CHECK(located(read("<mujoco>\n<worldbody><body name='a'><joint range='0 x'/></body></worldbody></mujoco>")) ==
         "parse-error 0:2:41 <joint range>: expected 2 numbers, found '0 x'\n");

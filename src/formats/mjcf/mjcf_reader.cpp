@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "formats/mjcf/mjcf_actuators.h"
 #include "formats/mjcf/mjcf_defaults.h"
@@ -58,11 +59,12 @@ class Reader {
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
     const FixedTendons tendons = read_fixed_tendons(sections);
+    std::vector<const XMLElement*> joint_equalities;
     for (const XMLElement* el : sections) {
       const std::string_view tag = el->Name();
       if (tag == "equality") {
         for (const XMLElement* c : sources_.children(el))
-          if (std::string_view(c->Name()) == "joint") read_equality_joint(c);
+          if (std::string_view(c->Name()) == "joint") joint_equalities.push_back(c);
       } else if (tag == "actuator") {
         for (const XMLElement* c : sources_.children(el))
           read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset);
@@ -71,7 +73,13 @@ class Reader {
     // MJCF lists every actuator: a joint none of them reaches is moved only by its links.
     for (Joint& joint : result_.asset.joints)
       if (joint.actuation == Actuation::Unknown) joint.actuation = Actuation::Passive;
+    // After the actuators: which side of a coupling is driven decides which one follows.
+    for (const XMLElement* el : joint_equalities) read_equality_joint(el);
     result_.asset.index_names();  // after the equalities: they make the mimics
+    // Equalities are read after the actuators; report in document order all the same.
+    std::stable_sort(result_.diagnostics.begin(), result_.diagnostics.end(), [](const auto& a, const auto& b) {
+      return std::tie(a.span.file, a.span.offset) < std::tie(b.span.file, b.span.offset);
+    });
     return std::move(result_);
   }
 
@@ -309,6 +317,7 @@ class Reader {
   }
 
   // <equality><joint joint1 joint2 polycoef>: q1 = c0 + c1·q2 + c2·q2² + c3·q2³ + c4·q2⁴.
+  // joint1 is the mimic of joint2, unless only joint1 is actuated (see below).
   void read_equality_joint(const XMLElement* el) {
     const char* cls = el->Attribute("class");
     if (cls && !defaults_.has_class(cls)) {
@@ -346,6 +355,22 @@ class Reader {
             .note("asset-lint models only the linear part q1 = c0 + c1·q2 as a mimic (multiplier c1, offset c0).");
         break;
       }
+    // MuJoCo's equality is symmetric: it holds q1 − f(q2) at zero without preferring a side.
+    // When only joint1 is actuated, joint2 is the one that follows (q2 = (q1 − c0) / c1).
+    auto leader = std::find_if(result_.asset.joints.begin(), result_.asset.joints.end(),
+                               [&](const Joint& j) { return j.name.text == joint2; });
+    const double c0 = c->empty() ? 0.0 : (*c)[0], c1 = c->size() > 1 ? (*c)[1] : 0.0;
+    if (leader != result_.asset.joints.end() && follower->actuation == Actuation::Actuated &&
+        leader->actuation == Actuation::Passive && c1 != 0 && std::isfinite(c0 / c1)) {
+      if (leader->mimic) return;
+      Mimic mimic;
+      mimic.span = span;
+      mimic.reference = Name{joint1, values_.value_span(own(el, "joint1"), "joint1")};
+      mimic.multiplier = Quantity::unauthored(1.0 / c1, Unit::None);
+      mimic.offset = Quantity::unauthored(-c0 / c1, leader->type == JointType::Prismatic ? Unit::Meter : Unit::Radian);
+      leader->mimic = std::move(mimic);
+      return;
+    }
     if (follower->mimic) return;
     Mimic mimic;
     mimic.span = span;
