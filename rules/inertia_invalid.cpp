@@ -215,7 +215,19 @@ class InertiaInvalid final : public Rule {
     const double relative = rule_option(info_, settings, "definiteness_tolerance");
     const double triangle = rule_option(info_, settings, "triangle_tolerance");
     // Welded to the root, the link moves only when the base floats: risky, not certainly wrong.
-    const Severity impossible = placement.role == Role::Welded && !placement.moves ? Severity::Warning : Severity::Error;
+    // A frame-light link welded to another body is merged into it: its tensor changes that
+    // body's by a negligible amount, wrong or not.
+    const bool negligible = placement.role == Role::Welded && mass <= dummy_mass;
+    const Severity impossible = negligible                                        ? Severity::Info
+                                : placement.role == Role::Welded && !placement.moves ? Severity::Warning
+                                                                                     : Severity::Error;
+    const auto merged_note = [&](Diagnostic& d) {
+      if (negligible)
+        d.note(fmt::format("It weighs {} kg (at most dummy_mass {} kg) and is welded by {}: merged into the body it is "
+                           "welded to, it changes that body's inertia by at most {} kg·m². Wrong, but harmless.",
+                           format_number(mass), format_number(dummy_mass), joint_label(*placement.joint),
+                           format_number(scale, 3)));
+    };
     if (moments[0] < -relative * scale) {
       Diagnostic& d = out.report(inertial.inertia_span, impossible,
                                  fmt::format("inertia of link '{}' has a negative principal moment {} kg·m²",
@@ -223,14 +235,16 @@ class InertiaInvalid final : public Rule {
       d.note(fmt::format("Principal moments {} (mass {} kg); every moment of a real body is positive.",
                          moments_text(moments), format_number(mass)));
       d.note("The usual cause is a product of inertia with the wrong sign, or products copied from another frame.");
+      merged_note(d);
     } else if (moments[0] <= relative * scale) {
       report_singular(link, placement, moments, relative, out);
     } else if (moments[2] > (moments[0] + moments[1]) * (1 + triangle)) {
-      out.report(inertial.inertia_span, impossible,
-                 fmt::format("inertia of link '{}' violates the triangle inequality", link.name.text))
-          .note(fmt::format("Principal moments {}: {} > {} + {}.", moments_text(moments), format_number(moments[2], 4),
-                            format_number(moments[0], 4), format_number(moments[1], 4)))
-          .note("No distribution of positive mass has a largest moment above the sum of the other two.");
+      Diagnostic& d = out.report(inertial.inertia_span, impossible,
+                                 fmt::format("inertia of link '{}' violates the triangle inequality", link.name.text));
+      d.note(fmt::format("Principal moments {}: {} > {} + {}.", moments_text(moments), format_number(moments[2], 4),
+                         format_number(moments[0], 4), format_number(moments[1], 4)));
+      d.note("No distribution of positive mass has a largest moment above the sum of the other two.");
+      merged_note(d);
     }
   }
 
@@ -278,7 +292,7 @@ class InertiaInvalid final : public Rule {
                    "relative slack allowed on the triangle inequality I_max ≤ (I_a + I_b)·(1 + tolerance)"},
                   {"definiteness_tolerance", 1e-9,
                    "a principal moment within this fraction of the largest one counts as zero, not negative"},
-                  {"dummy_mass", 1e-4, "a root link this light (kg) is a frame, not a body: its tensor is not checked"}}};
+                  {"dummy_mass", 1e-4, "a root link this light (kg) is a frame, not a body: its tensor is not checked; a welded link this light gets infos only"}}};
 };
 
 }  // namespace
