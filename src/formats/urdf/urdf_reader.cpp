@@ -1,7 +1,6 @@
 #include "formats/urdf/urdf_reader.h"
 
 #include <fmt/format.h>
-#include <tinyxml2.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -9,46 +8,44 @@
 
 #include "formats/urdf/urdfdom_check.h"
 #include "formats/urdf/urdfdom_verdict.h"
-#include "formats/xml/xml_document.h"
+#include "formats/xml/scanned_document.h"
+#include "formats/xml/xml_spans.h"
 #include "rules/reader_rules.h"
 #include "util/numbers.h"
 
 namespace assetlint::urdf {
 namespace {
 
-using tinyxml2::XMLElement;
+using xml::Element;
 
 constexpr FileId kFile = 0;
 
 class UrdfReader {
  public:
-  explicit UrdfReader(std::shared_ptr<const SourceFile> file) : file_(*file) {
+  explicit UrdfReader(std::shared_ptr<const SourceFile> file) : file_(*file), doc_(file_, kFile) {
     result_.asset.format = SourceFormat::Urdf;
     result_.asset.sources.push_back(std::move(file));
   }
 
   ReadResult run() {
-    doc_ = std::make_unique<xml::XmlDocument>(file_, kFile);
-    for (const auto& error : doc_->errors()) parse_error(error.span, error.message);
-    const XMLElement* robot = doc_->root();
+    for (const auto& error : doc_.errors()) parse_error(error.span, error.message);
+    const Element* robot = doc_.root();
     if (!robot) return fail();
-    if (std::string_view(robot->Name()) != "robot") {
-      parse_error(element_span(robot),
-                  fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot->Name()));
+    if (robot->name != "robot") {
+      parse_error(element_span(robot), fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot->name));
       return fail();
     }
-    if (may_hold_xacro(doc_->document()) && find_xacro(robot)) return fail();
+    if (may_hold_xacro(doc_.document()) && find_xacro()) return fail();
 
     result_.asset.robot_name = name_of(robot);
     result_.asset.robot_span = element_span(robot);
-    for (const XMLElement* el = robot->FirstChildElement(); el; el = el->NextSiblingElement()) {
-      const std::string_view tag = el->Name();
-      if (tag == "link") read_link(el);
-      else if (tag == "joint") read_joint(el);
+    for (const Element* el = doc_.first_child(robot); el; el = doc_.next_sibling(el)) {
+      if (el->name == "link") read_link(el);
+      else if (el->name == "joint") read_joint(el);
     }
     result_.asset.index_names();
-    if (!urdfdom_needed(robot)) return std::move(result_);
-    check_with_urdfdom(doc_->document());
+    if (urdfdom_certainly_accepts(doc_)) return std::move(result_);
+    check_with_urdfdom(doc_.document());
     return std::move(result_);
   }
 
@@ -63,44 +60,45 @@ class UrdfReader {
                                    std::move(message), std::nullopt, {}});
   }
 
-  Span element_span(const XMLElement* el) const { return doc_->element_span(el); }
-  Span value_span(const XMLElement* el, std::string_view attr) const { return doc_->value_span(el, attr); }
-  Span attribute_span(const XMLElement* el, std::string_view attr) const { return doc_->attribute_span(el, attr); }
+  Span element_span(const Element* el) const { return doc_.element_span(el); }
+  Span value_span(const Element* el, std::string_view attr) const { return doc_.value_span(el, attr); }
+  Span attribute_span(const Element* el, std::string_view attr) const { return doc_.attribute_span(el, attr); }
+  std::optional<std::string_view> attribute(const Element* el, std::string_view attr) const { return doc_.value(el, attr); }
 
-  Name name_of(const XMLElement* el) const {
-    const char* name = el->Attribute("name");
-    return Name{name ? std::string(trim(name)) : std::string(), name ? value_span(el, "name") : element_span(el)};
+  Name name_of(const Element* el) const {
+    const auto name = attribute(el, "name");
+    return Name{name ? std::string(trim(*name)) : std::string(), name ? value_span(el, "name") : element_span(el)};
   }
 
-  OptQuantity quantity(const XMLElement* el, const char* attr, Unit unit) {
+  OptQuantity quantity(const Element* el, std::string_view attr, Unit unit) {
     if (!el) return std::nullopt;
-    const char* raw = el->Attribute(attr);
-    if (!raw) return std::nullopt;
-    const Span span = value_span(el, attr);
+    const xml::XmlAttributeSpan* a = el->attribute(attr);
+    if (!a) return std::nullopt;
+    const std::string_view raw = doc_.value(*a);
+    const Span span = xml::value_span(file_, kFile, *a);
     auto value = parse_double(trim(raw));
     if (!value) {
-      parse_error(span, fmt::format("<{} {}>: expected a number, found '{}'", el->Name(), attr, raw));
+      parse_error(span, fmt::format("<{} {}>: expected a number, found '{}'", el->name, attr, raw));
       return std::nullopt;
     }
     Quantity q = Quantity::from_authored(*value, unit, span);
-    q.declaration = attribute_span(el, attr);
+    q.declaration = xml::attribute_span(file_, kFile, *a);
     return q;
   }
 
-  std::optional<Eigen::Vector3d> vector3(const XMLElement* el, const char* attr) {
+  std::optional<Eigen::Vector3d> vector3(const Element* el, std::string_view attr) {
     if (!el) return std::nullopt;
-    const char* raw = el->Attribute(attr);
+    const auto raw = attribute(el, attr);
     if (!raw) return std::nullopt;
-    auto values = parse_doubles(raw);
+    auto values = parse_doubles(*raw);
     if (!values || values->size() != 3) {
-      parse_error(value_span(el, attr),
-                  fmt::format("<{} {}>: expected three numbers, found '{}'", el->Name(), attr, raw));
+      parse_error(value_span(el, attr), fmt::format("<{} {}>: expected three numbers, found '{}'", el->name, attr, *raw));
       return std::nullopt;
     }
     return Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
   }
 
-  Eigen::Isometry3d pose(const XMLElement* origin) {
+  Eigen::Isometry3d pose(const Element* origin) {
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     if (!origin) return pose;
     if (auto xyz = vector3(origin, "xyz")) pose.translation() = *xyz;
@@ -122,41 +120,42 @@ class UrdfReader {
     return false;
   }
 
-  bool find_xacro(const XMLElement* el) {
-    if (std::string_view(el->Name()).starts_with("xacro:")) {
-      parse_error(element_span(el), fmt::format("unexpanded xacro: <{}>; run `xacro` to produce a URDF first", el->Name()));
-      return true;
-    }
-    for (const tinyxml2::XMLAttribute* a = el->FirstAttribute(); a; a = a->Next()) {
-      const std::string_view value = a->Value();
-      if (value.find("${") != std::string_view::npos || value.find("$(") != std::string_view::npos) {
-        parse_error(value_span(el, a->Name()),
-                    fmt::format("unexpanded xacro expression '{}'; run `xacro` to produce a URDF first", value));
+  // The first xacro element or expression, in document order.
+  bool find_xacro() {
+    for (const Element& el : doc_.scan().tags) {
+      if (el.name.starts_with("xacro:")) {
+        parse_error(element_span(&el), fmt::format("unexpanded xacro: <{}>; run `xacro` to produce a URDF first", el.name));
         return true;
       }
+      for (const xml::XmlAttributeSpan& a : el.attributes) {
+        const std::string_view value = doc_.value(a);
+        if (value.find("${") != std::string_view::npos || value.find("$(") != std::string_view::npos) {
+          parse_error(xml::value_span(file_, kFile, a),
+                      fmt::format("unexpanded xacro expression '{}'; run `xacro` to produce a URDF first", value));
+          return true;
+        }
+      }
     }
-    for (const XMLElement* c = el->FirstChildElement(); c; c = c->NextSiblingElement())
-      if (find_xacro(c)) return true;
     return false;
   }
 
-  void read_link(const XMLElement* el) {
+  void read_link(const Element* el) {
     Link link;
     link.name = name_of(el);
     link.span = element_span(el);
-    if (const XMLElement* in = el->FirstChildElement("inertial")) {
+    if (const Element* in = doc_.first_child(el, "inertial")) {
       Inertial inertial;
       inertial.span = element_span(in);
-      const XMLElement* mass = in->FirstChildElement("mass");
+      const Element* mass = doc_.first_child(in, "mass");
       auto m = quantity(mass, "value", Unit::Kilogram);
       inertial.mass = m ? *m : Quantity::unauthored(0.0, Unit::Kilogram);
       if (!m) inertial.mass.span = mass ? element_span(mass) : inertial.span;
       inertial.mass_authored = m.has_value();
-      const XMLElement* origin = in->FirstChildElement("origin");
+      const Element* origin = doc_.first_child(in, "origin");
       const Eigen::Isometry3d frame = pose(origin);
       inertial.com = frame.translation();
       inertial.com_span = origin ? element_span(origin) : inertial.span;
-      if (const XMLElement* tensor = in->FirstChildElement("inertia")) {
+      if (const Element* tensor = doc_.first_child(in, "inertia")) {
         inertial.inertia_span = element_span(tensor);
         auto component = [&](const char* attr) {
           auto q = quantity(tensor, attr, Unit::KilogramMeter2);
@@ -187,54 +186,54 @@ class UrdfReader {
     return std::nullopt;
   }
 
-  void read_joint(const XMLElement* el) {
+  void read_joint(const Element* el) {
     Joint joint;
     joint.name = name_of(el);
     joint.span = element_span(el);
-    const char* type = el->Attribute("type");
+    const auto type = attribute(el, "type");
     joint.type_span = type ? value_span(el, "type") : joint.span;
-    auto parsed_type = joint_type(type ? trim(type) : std::string_view());
+    auto parsed_type = joint_type(type ? trim(*type) : std::string_view());
     if (!parsed_type) return;  // urdfdom reports the unknown type (urdf-invalid); nothing to model
     joint.type = *parsed_type;
     const bool angular = is_angular(joint.type);
 
-    auto link_ref = [&](const char* tag) {
-      const XMLElement* ref = el->FirstChildElement(tag);
-      const char* link = ref ? ref->Attribute("link") : nullptr;
-      return Name{link ? std::string(trim(link)) : std::string(),
+    auto link_ref = [&](std::string_view tag) {
+      const Element* ref = doc_.first_child(el, tag);
+      const auto link = attribute(ref, "link");
+      return Name{link ? std::string(trim(*link)) : std::string(),
                   link ? value_span(ref, "link") : (ref ? element_span(ref) : joint.span)};
     };
     joint.parent = link_ref("parent");
     joint.child = link_ref("child");
-    joint.frame_in_link[0] = pose(el->FirstChildElement("origin"));
+    joint.frame_in_link[0] = pose(doc_.first_child(el, "origin"));
 
-    if (const XMLElement* axis = el->FirstChildElement("axis")) {
+    if (const Element* axis = doc_.first_child(el, "axis")) {
       joint.axis_span = value_span(axis, "xyz");
       if (auto xyz = vector3(axis, "xyz"); xyz && xyz->norm() > 0) joint.axis = xyz->normalized();
     } else {
       joint.axis_span = joint.span;
     }
 
-    if (const XMLElement* limit = el->FirstChildElement("limit")) {
+    if (const Element* limit = doc_.first_child(el, "limit")) {
       joint.limit_span = element_span(limit);
       const Unit position = angular ? Unit::Radian : Unit::Meter;
       joint.lower = quantity(limit, "lower", position);
       joint.upper = quantity(limit, "upper", position);
-      joint.bounds_unreadable = (!joint.lower && limit->Attribute("lower")) || (!joint.upper && limit->Attribute("upper"));
+      joint.bounds_unreadable = (!joint.lower && limit->attribute("lower")) || (!joint.upper && limit->attribute("upper"));
       joint.effort = quantity(limit, "effort", angular ? Unit::NewtonMeter : Unit::Newton);
       joint.velocity = quantity(limit, "velocity", angular ? Unit::RadianPerSecond : Unit::MeterPerSecond);
     } else {
       joint.limit_span = joint.span;
     }
-    if (const XMLElement* dynamics = el->FirstChildElement("dynamics")) {
+    if (const Element* dynamics = doc_.first_child(el, "dynamics")) {
       joint.joint_damping = quantity(dynamics, "damping", angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter);
       joint.joint_friction = quantity(dynamics, "friction", angular ? Unit::NewtonMeter : Unit::Newton);
     }
-    if (const XMLElement* mimic = el->FirstChildElement("mimic")) {
+    if (const Element* mimic = doc_.first_child(el, "mimic")) {
       Mimic m;
       m.span = element_span(mimic);
-      const char* ref = mimic->Attribute("joint");
-      m.reference = Name{ref ? std::string(trim(ref)) : std::string(), ref ? value_span(mimic, "joint") : m.span};
+      const auto ref = attribute(mimic, "joint");
+      m.reference = Name{ref ? std::string(trim(*ref)) : std::string(), ref ? value_span(mimic, "joint") : m.span};
       auto multiplier = quantity(mimic, "multiplier", Unit::None);
       m.multiplier = multiplier ? *multiplier : Quantity::unauthored(1.0, Unit::None);
       auto offset = quantity(mimic, "offset", angular ? Unit::Radian : Unit::Meter);
@@ -247,25 +246,17 @@ class UrdfReader {
 
   // Drake's URDF extension models the motor as rotor inertia and gear ratio; the
   // armature PhysX would see is their reflected inertia G²·I_rotor.
-  void read_drake_armature(const XMLElement* el, Joint& joint) {
-    const XMLElement* actuator = el->FirstChildElement("drake:rotor_inertia");
+  void read_drake_armature(const Element* el, Joint& joint) {
+    const Element* actuator = doc_.first_child(el, "drake:rotor_inertia");
     if (!actuator) return;
     auto rotor = quantity(actuator, "value", Unit::KilogramMeter2);
     if (!rotor) return;
     double gear = 1.0;
-    if (auto ratio = quantity(el->FirstChildElement("drake:gear_ratio"), "value", Unit::None)) gear = ratio->value;
+    if (auto ratio = quantity(doc_.first_child(el, "drake:gear_ratio"), "value", Unit::None)) gear = ratio->value;
     Quantity armature = *rotor;
     armature.value = rotor->value * gear * gear;
     joint.armature = armature;
     joint.motor = Motor{*rotor, gear, fmt::format("<drake:rotor_inertia> and <drake:gear_ratio> at line {}", rotor->span.line)};
-  }
-
-  // urdfdom runs unless its verdict is certainly "accepted" (src/formats/urdf/urdfdom_verdict.h):
-  // then it would add nothing.
-  bool urdfdom_needed(const XMLElement* robot) const {
-    if (!doc_->errors().empty() || !doc_->positions_known()) return true;
-    const RawAttribute raw = [this](const XMLElement* el, std::string_view attr) { return doc_->raw_value(el, attr); };
-    return !urdfdom_certainly_accepts(doc_->document(), robot, raw);
   }
 
   // Runs urdfdom and reports its complaints as one finding: the first is the cause, the rest
@@ -341,20 +332,20 @@ class UrdfReader {
       if (const Link* l = result_.asset.find_link(name)) return l->name.span;
     // An element the model leaves out (a joint of unknown type): its name attribute.
     for (auto name : names)
-      for (const auto& tag : doc_->scan().tags)
+      for (const auto& tag : doc_.scan().tags)
         if (const xml::XmlAttributeSpan* a = tag.attribute("name");
             a && trim(file_.view().substr(a->value_offset, a->value_length)) == name)
           return file_.span(kFile, a->value_offset, a->value_length);
     // A quoted element name ("Unknown geometry type 'capsule'"): its first occurrence.
     for (auto name : names)
-      for (const auto& tag : doc_->scan().tags)
+      for (const auto& tag : doc_.scan().tags)
         if (tag.name == name) return file_.span(kFile, tag.offset, tag.end - tag.offset);
     return result_.asset.robot_span;
   }
 
   const SourceFile& file_;
   ReadResult result_;
-  std::unique_ptr<xml::XmlDocument> doc_;
+  xml::ScannedDocument doc_;
 };
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "formats/urdf/urdfdom_verdict.h"
 
-#include <tinyxml2.h>
-
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -12,7 +10,7 @@
 namespace assetlint::urdf {
 namespace {
 
-using tinyxml2::XMLElement;
+using xml::Element;
 
 bool xml_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -97,6 +95,19 @@ bool plain_markup(std::string_view document) {
   return true;
 }
 
+// plain_markup from what the scanner saw on its way: without '&' or non-ASCII bytes
+// anywhere, only the processing instructions and DOCTYPE/CDATA sections need a look.
+bool plain_markup(const xml::ScannedDocument& doc) {
+  const xml::XmlScan& scan = doc.scan();
+  if (scan.non_ascii || scan.ampersand) return plain_markup(doc.document());
+  if (scan.doctype_or_cdata) return false;
+  const std::string_view text = doc.file().view();
+  const std::size_t first = text.find_first_not_of(" \t\r\n", scan.document_begin);
+  for (std::size_t offset : scan.instructions)
+    if (offset != first || !plain_declaration(text.substr(offset))) return false;
+  return true;
+}
+
 bool has_control(std::string_view value) {
   for (char c : value)
     if (static_cast<unsigned char>(c) < 0x20) return true;
@@ -151,24 +162,24 @@ bool plain_vector(std::string_view text) {
 
 class Verdict {
  public:
-  explicit Verdict(const RawAttribute& raw) : raw_(raw) {}
+  explicit Verdict(const xml::ScannedDocument& doc) : doc_(doc) {}
 
-  bool accepts(const XMLElement* robot) {
-    if (!robot || std::string_view(robot->Name()) != "robot") return false;
+  bool accepts(const Element* robot) {
+    if (!robot || robot->name != "robot") return false;
     if (!value(robot, "name")) return false;
     if (auto version = value(robot, "version"); version && *version != "1.0") return false;
 
     std::unordered_set<std::string_view> materials;
-    for (const XMLElement* m = robot->FirstChildElement("material"); m; m = m->NextSiblingElement("material"))
+    for (const Element* m = doc_.first_child(robot, "material"); m; m = doc_.next_sibling(m, "material"))
       if (!materials.insert(value(m, "name").value_or("")).second) return false;
 
     std::unordered_set<std::string_view> links;
-    for (const XMLElement* l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link"))
+    for (const Element* l = doc_.first_child(robot, "link"); l; l = doc_.next_sibling(l, "link"))
       if (!links.insert(value(l, "name").value_or("")).second) return false;
     if (links.empty()) return false;
 
     std::unordered_set<std::string_view> joints, children;
-    for (const XMLElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+    for (const Element* j = doc_.first_child(robot, "joint"); j; j = doc_.next_sibling(j, "joint")) {
       auto name = value(j, "name");
       if (!name || !joints.insert(*name).second || !joint_parses(j)) return false;
       const auto parent = link_of(j, "parent"), child = link_of(j, "child");
@@ -182,70 +193,70 @@ class Verdict {
   }
 
  private:
-  std::optional<std::string_view> value(const XMLElement* el, std::string_view attr) {
-    auto v = raw_(el, attr);
+  std::optional<std::string_view> value(const Element* el, std::string_view attr) {
+    auto v = doc_.raw_value(el, attr);
     if (v && has_control(*v)) clean_ = false;
     return v;
   }
-  bool number_if_present(const XMLElement* el, std::string_view attr) {
+  bool number_if_present(const Element* el, std::string_view attr) {
     auto v = value(el, attr);
     return !v || plain_number(*v);
   }
-  bool number(const XMLElement* el, std::string_view attr) {
+  bool number(const Element* el, std::string_view attr) {
     auto v = value(el, attr);
     return v && plain_number(*v);
   }
-  bool vector_if_present(const XMLElement* el, std::string_view attr) {
+  bool vector_if_present(const Element* el, std::string_view attr) {
     auto v = value(el, attr);
     return !v || plain_vector(*v);
   }
-  std::string_view link_of(const XMLElement* joint, const char* tag) {
-    const XMLElement* el = joint->FirstChildElement(tag);
+  std::string_view link_of(const Element* joint, const char* tag) {
+    const Element* el = doc_.first_child(joint, tag);
     return el ? value(el, "link").value_or("") : std::string_view();
   }
 
   // urdfdom's parseJoint returns true.
-  bool joint_parses(const XMLElement* j) {
-    if (const XMLElement* origin = j->FirstChildElement("origin"))
+  bool joint_parses(const Element* j) {
+    if (const Element* origin = doc_.first_child(j, "origin"))
       if (!vector_if_present(origin, "xyz") || !vector_if_present(origin, "rpy")) return false;
     auto type = value(j, "type");
     if (!type) return false;
     const bool moving = *type == "revolute" || *type == "continuous" || *type == "prismatic" || *type == "planar";
     if (!moving && *type != "fixed" && *type != "floating") return false;
-    if (const XMLElement* axis = j->FirstChildElement("axis"); axis && moving)
+    if (const Element* axis = doc_.first_child(j, "axis"); axis && moving)
       if (!vector_if_present(axis, "xyz")) return false;
-    if (const XMLElement* limit = j->FirstChildElement("limit")) {
+    if (const Element* limit = doc_.first_child(j, "limit")) {
       if (!number_if_present(limit, "lower") || !number_if_present(limit, "upper") || !number(limit, "effort") ||
           !number(limit, "velocity"))
         return false;
     } else if (*type == "revolute" || *type == "prismatic") {
       return false;
     }
-    if (const XMLElement* safety = j->FirstChildElement("safety_controller"))
+    if (const Element* safety = doc_.first_child(j, "safety_controller"))
       if (!number_if_present(safety, "soft_lower_limit") || !number_if_present(safety, "soft_upper_limit") ||
           !number_if_present(safety, "k_position") || !number(safety, "k_velocity"))
         return false;
-    if (const XMLElement* calibration = j->FirstChildElement("calibration"))
+    if (const Element* calibration = doc_.first_child(j, "calibration"))
       if (!number_if_present(calibration, "rising") || !number_if_present(calibration, "falling")) return false;
-    if (const XMLElement* mimic = j->FirstChildElement("mimic"))
+    if (const Element* mimic = doc_.first_child(j, "mimic"))
       if (!value(mimic, "joint") || !number_if_present(mimic, "multiplier") || !number_if_present(mimic, "offset"))
         return false;
-    if (const XMLElement* dynamics = j->FirstChildElement("dynamics")) {
+    if (const Element* dynamics = doc_.first_child(j, "dynamics")) {
       if (!number_if_present(dynamics, "damping") || !number_if_present(dynamics, "friction")) return false;
       if (!value(dynamics, "damping") && !value(dynamics, "friction")) return false;
     }
     return true;
   }
 
-  const RawAttribute& raw_;
+  const xml::ScannedDocument& doc_;
   bool clean_ = true;  // every attribute value read is free of control characters
 };
 
 }  // namespace
 
-bool urdfdom_certainly_accepts(std::string_view document, const XMLElement* robot, const RawAttribute& raw) {
-  if (!plain_markup(document)) return false;
-  return Verdict(raw).accepts(robot);
+bool urdfdom_certainly_accepts(const xml::ScannedDocument& doc) {
+  if (!doc.errors().empty() || !plain_markup(doc)) return false;
+  return Verdict(doc).accepts(doc.root());
 }
 
 }  // namespace assetlint::urdf

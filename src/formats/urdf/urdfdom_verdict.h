@@ -7,20 +7,11 @@
 // in attribute values, numbers outside a plain decimal grammar, ...) answers "not certain",
 // and urdfdom runs as before. tests/urdfdom_verdict_test.cpp compares it with urdfdom over every
 // corpus file, every fixture and mutated variants of them; the URDF fuzz target does too.
-#include <functional>
-#include <optional>
-#include <string_view>
-
-namespace tinyxml2 {
-class XMLElement;
-}
+#include "formats/xml/scanned_document.h"
 
 namespace assetlint::urdf {
 
-// The attribute's bytes exactly as written between the quotes; nullopt when absent.
-using RawAttribute = std::function<std::optional<std::string_view>(const tinyxml2::XMLElement*, std::string_view)>;
-
-// `document`: what urdfdom would be given; `robot`: its root element as tinyxml2 parsed it.
-bool urdfdom_certainly_accepts(std::string_view document, const tinyxml2::XMLElement* robot, const RawAttribute& raw);
+// `doc`: a well-formed document (no errors), what urdfdom would be given.
+bool urdfdom_certainly_accepts(const xml::ScannedDocument& doc);
 
 }  // namespace assetlint::urdf

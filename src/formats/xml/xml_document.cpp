@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "util/numbers.h"
+#include "formats/xml/xml_spans.h"
 
 namespace assetlint::xml {
 
@@ -61,41 +61,24 @@ std::optional<std::string_view> XmlDocument::raw_value(const XMLElement* el, std
 
 Span XmlDocument::element_span(const XMLElement* el) const {
   if (!el) return file_.span(id_, scan_.document_begin, 0);
-  if (auto it = tags_.find(el); it != tags_.end())
-    return file_.span(id_, it->second->offset, it->second->end - it->second->offset);
+  if (auto it = tags_.find(el); it != tags_.end()) return tag_span(file_, id_, *it->second);
   const auto line = file_.position(scan_.document_begin).line + static_cast<std::uint32_t>(el->GetLineNum()) - 1;
   return file_.span(id_, file_.line_start(line), 0);
 }
 
 Span XmlDocument::value_span(const XMLElement* el, std::string_view attr) const {
   const XmlAttributeSpan* a = attribute(el, attr);
-  if (!a) return element_span(el);
-  const std::string_view raw = file_.view().substr(a->value_offset, a->value_length);
-  const std::string_view trimmed = trim(raw);
-  const std::size_t lead = trimmed.empty() ? 0 : static_cast<std::size_t>(trimmed.data() - raw.data());
-  return file_.span(id_, a->value_offset + lead, trimmed.size());
+  return a ? xml::value_span(file_, id_, *a) : element_span(el);
 }
 
 Span XmlDocument::attribute_span(const XMLElement* el, std::string_view attr) const {
   const XmlAttributeSpan* a = attribute(el, attr);
-  if (!a) return element_span(el);
-  return file_.span(id_, a->name_offset, a->value_offset + a->value_length + 1 - a->name_offset);
+  return a ? xml::attribute_span(file_, id_, *a) : element_span(el);
 }
 
 Span XmlDocument::token_span(const XMLElement* el, std::string_view attr, std::size_t index) const {
   const XmlAttributeSpan* a = attribute(el, attr);
-  if (!a) return element_span(el);
-  const std::string_view raw = file_.view().substr(a->value_offset, a->value_length);
-  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
-  std::size_t pos = 0;
-  for (std::size_t n = 0;; ++n) {
-    while (pos < raw.size() && space(raw[pos])) ++pos;
-    if (pos >= raw.size()) return value_span(el, attr);
-    std::size_t end = pos;
-    while (end < raw.size() && !space(raw[end])) ++end;
-    if (n == index) return file_.span(id_, a->value_offset + pos, end - pos);
-    pos = end;
-  }
+  return a ? xml::token_span(file_, id_, *a, index) : element_span(el);
 }
 
 }  // namespace assetlint::xml
