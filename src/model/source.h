@@ -50,6 +50,7 @@ class SourceFile {
   std::string path_;
   std::string text_;
   std::vector<std::size_t> line_starts_;
+  bool ascii_ = true;  // no byte >= 0x80: a column is a byte count
   std::size_t bom_length_ = 0;
 };
 

@@ -197,11 +197,14 @@ std::size_t judge_layers_in_stage_context(std::vector<FileReport>& reports) {
 
 void drop_repeated_findings(std::vector<FileReport>& reports) {
   std::set<std::tuple<std::string, std::size_t, std::string, std::string>> seen;
+  // weakly_canonical asks the file system about every component of the path: once per file.
+  std::map<std::string, std::string> canonical;
   for (auto& report : reports) {
     std::erase_if(report.diagnostics, [&](const Diagnostic& d) {
       const std::string& layer = d.span.file < report.sources.size() ? report.source(d.span.file).path() : report.path;
-      const auto canonical = std::filesystem::weakly_canonical(layer).string();
-      return !seen.emplace(canonical, d.span.offset, d.rule, d.message).second;
+      auto it = canonical.find(layer);
+      if (it == canonical.end()) it = canonical.emplace(layer, std::filesystem::weakly_canonical(layer).string()).first;
+      return !seen.emplace(it->second, d.span.offset, d.rule, d.message).second;
     });
   }
 }

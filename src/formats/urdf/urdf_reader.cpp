@@ -39,6 +39,13 @@ class UrdfReader {
 
     result_.asset.robot_name = name_of(robot);
     result_.asset.robot_span = element_span(robot);
+    std::size_t links = 0, joints = 0;
+    for (const Element* el = doc_.first_child(robot); el; el = doc_.next_sibling(el)) {
+      links += el->name == "link" ? 1 : 0;
+      joints += el->name == "joint" ? 1 : 0;
+    }
+    result_.asset.links.reserve(links);
+    result_.asset.joints.reserve(joints);
     for (const Element* el = doc_.first_child(robot); el; el = doc_.next_sibling(el)) {
       if (el->name == "link") read_link(el);
       else if (el->name == "joint") read_joint(el);

@@ -87,6 +87,23 @@ class Scanner {
   explicit Scanner(std::string_view text) : text_(text) {}
 
   XmlScan run() {
+    scan();
+    // The storage no longer grows: the tags may point into it.
+    for (std::size_t t = 0; t < scan_.tags.size(); ++t) {
+      const auto [first, count] = attribute_ranges_[t];
+      scan_.tags[t].attributes = std::span<const XmlAttributeSpan>(scan_.attribute_storage).subspan(first, count);
+    }
+    return std::move(scan_);
+  }
+
+ private:
+  void scan() {
+    // Room for a tag every 32 bytes and an attribute every 16: a generated URDF has about
+    // half that, and pages never touched cost nothing, where growing by doubling copies and
+    // faults in every page twice.
+    scan_.tags.reserve(text_.size() / 32 + 4);
+    scan_.attribute_storage.reserve(text_.size() / 16 + 4);
+    attribute_ranges_.reserve(text_.size() / 32 + 4);
     std::size_t pos = 0;
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
     scan_.document_begin = pos;
@@ -100,18 +117,17 @@ class Scanner {
       const auto c = static_cast<unsigned char>(text_[i]);
       if (c != 0 && c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
         problem(i, 1, fmt::format("control character U+{:04X} is not allowed in XML 1.0", c), false);
-        return std::move(scan_);
+        return;
       }
     }
     scan_prolog(pos);
-    if (!scan_.recoverable) return std::move(scan_);
+    if (!scan_.recoverable) return;
     if (pos >= text_.size()) {
       problem(text_.size(), 0, "no root element: the file holds no XML element", false);
-      return std::move(scan_);
+      return;
     }
     scan_element_tree(pos);
     if (scan_.recoverable) scan_epilog(pos);
-    return std::move(scan_);
   }
 
  private:
@@ -227,20 +243,22 @@ class Scanner {
         pos = next;
         continue;
       }
-      if (text_.compare(pos, 4, "<!--") == 0) {
+      // Most markup is a start tag: the other kinds only when the byte after '<' says so.
+      const char kind = pos + 1 < text_.size() ? text_[pos + 1] : '\0';
+      if (kind == '!' && text_.compare(pos, 4, "<!--") == 0) {
         if (!skip_to(pos, "-->", "unterminated comment '<!--'")) return;
         continue;
       }
-      if (text_.compare(pos, 9, "<![CDATA[") == 0) {
+      if (kind == '!' && text_.compare(pos, 9, "<![CDATA[") == 0) {
         scan_.doctype_or_cdata = true;
         if (!skip_to(pos, "]]>", "unterminated CDATA section")) return;
         continue;
       }
-      if (text_.compare(pos, 2, "<?") == 0) {
+      if (kind == '?') {
         misplaced_instruction(pos, "inside the root element");
         return;
       }
-      if (text_.compare(pos, 2, "</") == 0) {
+      if (kind == '/') {
         std::size_t name_begin = pos + 2, i = name_begin;
         while (i < text_.size() && is_name_char(text_[i])) ++i;
         std::string_view name = text_.substr(name_begin, i - name_begin);
@@ -289,6 +307,9 @@ class Scanner {
   bool scan_start_tag(std::size_t& pos, bool& self_closing) {
     XmlStartTag tag;
     tag.offset = pos;
+    const std::size_t first_attribute = scan_.attribute_storage.size();
+    // Where the attributes will be, as (offset, count) until the scan ends: the storage moves as it grows.
+    attribute_ranges_.emplace_back(first_attribute, 0);
     std::size_t i = pos + 1;
     const std::size_t name_begin = i;
     while (i < text_.size() && is_name_char(text_[i])) ++i;
@@ -352,17 +373,18 @@ class Scanner {
       }
       attr.value_offset = i + 1;
       attr.value_length = close - (i + 1);
-      for (const auto& existing : tag.attributes) {
-        if (existing.name == attr.name) {
+      for (std::size_t k = first_attribute; k < scan_.attribute_storage.size(); ++k) {
+        if (scan_.attribute_storage[k].name == attr.name) {
           problem(attr.name_offset, attr.name.size(),
                   fmt::format("attribute '{}' appears twice in '<{}>'", attr.name, tag.name), false);
           return false;
         }
       }
-      tag.attributes.push_back(attr);
+      scan_.attribute_storage.push_back(attr);
       i = close + 1;
     }
     tag.end = i;
+    attribute_ranges_.back().second = scan_.attribute_storage.size() - first_attribute;
     scan_.tags.push_back(std::move(tag));
     pos = i;
     return true;
@@ -395,6 +417,7 @@ class Scanner {
 
   std::string_view text_;
   XmlScan scan_;
+  std::vector<std::pair<std::size_t, std::size_t>> attribute_ranges_;  // per tag: first, count
 };
 
 }  // namespace

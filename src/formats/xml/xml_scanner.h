@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,7 +26,7 @@ struct XmlStartTag {
   std::string_view name;
   std::size_t offset = 0;  // the '<'
   std::size_t end = 0;     // one past the '>'
-  std::vector<XmlAttributeSpan> attributes;
+  std::span<const XmlAttributeSpan> attributes;  // in XmlScan::attribute_storage
   // The element tree, as indices into XmlScan::tags (kNone: there is none).
   std::uint32_t first_child = kNone;
   std::uint32_t next_sibling = kNone;
@@ -40,7 +41,13 @@ struct XmlProblem {
 };
 
 struct XmlScan {
+  XmlScan() = default;
+  XmlScan(XmlScan&&) = default;
+  XmlScan& operator=(XmlScan&&) = default;
+  XmlScan(const XmlScan&) = delete;  // the tags' attributes point into attribute_storage
+
   std::vector<XmlStartTag> tags;      // every start tag in document order
+  std::vector<XmlAttributeSpan> attribute_storage;  // all tags' attributes, one allocation
   std::vector<XmlProblem> problems;   // well-formedness problems, in order
   // The byte range that holds the XML document proper (declaration to the root's end tag).
   // Text before or after it is reported as a problem and left out of it.
