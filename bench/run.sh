@@ -30,6 +30,8 @@ kept=""
 median_of() { sed -n 's/.*"median": *\([0-9.e-]*\).*/\1/p' "$work/$1.json" | head -1; }
 # peak_kb CMD...: the peak resident set of one run, in KiB
 peak_kb() { { /usr/bin/time -f %M "$@" 2>&1 >/dev/null || true; } | tail -1; }
+# cpu_of NAME: mean user + system seconds from hyperfine's JSON export $work/NAME.json
+cpu_of() { sed -n 's/.*"user": *\([0-9.e-]*\).*/\1/p; s/.*"system": *\([0-9.e-]*\).*/\1/p' "$work/$1.json" | head -2 | awk '{ s += $1 } END { print s }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", a / b }'; }
 fmt() { awk -v a="$1" 'BEGIN { printf "%.4f", a }'; }
 hf() {  # hf NAME RUNS CMD
@@ -137,15 +139,16 @@ if [ "$have_check_urdf" = 1 ]; then
     hf corpus-al 15 "$lint -j1 ${files[*]}"
     hf corpus-cu 7 "for f in ${files[*]}; do check_urdf \$f >/dev/null 2>&1; done"
     a=$(median_of corpus-al) c=$(median_of corpus-cu)
+    ac=$(cpu_of corpus-al) cc=$(cpu_of corpus-cu)
     {
       echo "## Corpus: ${#files[@]} well-formed URDFs of ../shared/corpus/urdf"
       echo
-      echo "| command | median (s) |"
-      echo "|---|---:|"
-      echo "| \`asset-lint -j1 FILES...\` (one process, all rules) | $(fmt "$a") |"
-      echo "| \`for f in FILES; do check_urdf \$f; done\` | $(fmt "$c") |"
+      echo "| command | median wall (s) | mean CPU user + sys (s) |"
+      echo "|---|---:|---:|"
+      echo "| \`asset-lint -j1 FILES...\` (one process, all rules) | $(fmt "$a") | $(fmt "$ac") |"
+      echo "| \`for f in FILES; do check_urdf \$f; done\` | $(fmt "$c") | $(fmt "$cc") |"
       echo
-      echo "**Ratio asset-lint / check_urdf-per-file: $(ratio "$a" "$c")** (goal ≤ 0.1)."
+      echo "**Ratio asset-lint / check_urdf-per-file: $(ratio "$a" "$c") wall, $(ratio "$ac" "$cc") CPU** (goal ≤ 0.1)."
       echo
     } >> "$out"
   fi
@@ -162,7 +165,7 @@ load=$(cut -d' ' -f1 /proc/loadavg)
 hf usda 5 "$lint $stage"
 t=$(median_of usda)
 # CPU seconds (user + system, means): what the run costs when it has a core to itself.
-cpu=$(sed -n 's/.*"user": *\([0-9.e-]*\).*/\1/p; s/.*"system": *\([0-9.e-]*\).*/\1/p' "$work/usda.json" | head -2 | awk '{ s += $1 } END { print s }')
+cpu=$(cpu_of usda)
 m=$(peak_kb "$lint" "$stage")
 {
   echo "## USDA: parse + compose + lint of a synthetic stage"
@@ -174,5 +177,7 @@ m=$(peak_kb "$lint" "$stage")
   echo "| $bytes | $(fmt "$t") | $(awk -v b="$bytes" -v t="$t" 'BEGIN { printf "%.0f", b / 1e6 / t }') | $(fmt "$cpu") | $(awk -v b="$bytes" -v t="$cpu" 'BEGIN { printf "%.0f", b / 1e6 / t }') | $(awk -v m="$m" 'BEGIN { printf "%.0f", m * 1024 / 1e6 }') | $(awk -v b="$bytes" 'BEGIN { printf "%.0f", 2 * b / 1e6 + 64 }') |"
   echo
 } >> "$out"
+echo "Load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)." >> "$out"
+echo >> "$out"
 [ -n "$kept" ] && printf '%s\n' "$kept" >> "$out"
 echo "bench: wrote $out"
