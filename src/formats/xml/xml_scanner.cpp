@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -100,10 +101,12 @@ class Scanner {
   void scan() {
     // Room for a tag every 32 bytes and an attribute every 16: a generated URDF has about
     // half that, and pages never touched cost nothing, where growing by doubling copies and
-    // faults in every page twice.
-    scan_.tags.reserve(text_.size() / 32 + 4);
-    scan_.attribute_storage.reserve(text_.size() / 16 + 4);
-    attribute_ranges_.reserve(text_.size() / 32 + 4);
+    // faults in every page twice. Capped (a 100 MB file's worth) so that a file near the
+    // size limit asks for no more address space than it may end up needing.
+    const std::size_t room = std::min<std::size_t>(text_.size(), std::size_t{100} << 20);
+    scan_.tags.reserve(room / 32 + 4);
+    scan_.attribute_storage.reserve(room / 16 + 4);
+    attribute_ranges_.reserve(room / 32 + 4);
     std::size_t pos = 0;
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
     scan_.document_begin = pos;
