@@ -16,7 +16,7 @@ TEST_CASE("introspection: --show-settings names where every value came from", "[
   TempDir dir;
   write_file(dir.path() / "asset-lint.toml",
              "extend-ignore = [\"units-*\"]\nextend-exclude = [\"vendor\"]\n\n[simulation]\ntimesteps_per_second = 250\n\n"
-             "[rules.joint-max-velocity]\nseverity = \"error\"\n");
+             "[rules.joint-max-velocity]\nseverity = \"error\"\n\n[rules.drive-damping-ratio]\nmax_ratio = 20\n");
   write_file(dir.path() / "gripper.urdf", read_file(assetlint::test::fixtures_dir() / "report" / "gripper.urdf"));
   auto r = run_cli({"--show-settings", "gripper.urdf", "--extend-exclude", "old", "--position-iterations", "64",
                     "--extend-ignore", "mimic-limit-conflict"},
@@ -56,8 +56,11 @@ TEST_CASE("introspection: --show-settings names where every value came from", "[
         "# torque_margin is not set: no rounding\n"
         "# driven_joint is not set: the joint the mimics follow\n"
         "\n"
+        "[rules.drive-damping-ratio]\n"
+        "max_ratio = 20                           # asset-lint.toml:11\n"
+        "\n"
         "[rules.joint-max-velocity]\n"
-        "severity = \"error\"                       # asset-lint.toml\n");
+        "severity = \"error\"                       # asset-lint.toml:8\n");
   write_file(dir.path() / "asset-lint.toml", "select = 3\n");
   auto bad = run_cli({"--show-settings", "gripper.urdf"}, dir.path());
   CHECK(bad.exit_code == 2);

@@ -208,6 +208,7 @@ class Loader {
       const std::string table_name = fmt::format("rules.{}", id.str());
       for (const auto& [key, value] : table(node, table_name)) {
         const std::string_view k = key.str();
+        settings_.rule_setting_origins[fmt::format("{}.{}", rule->id, k)] = origin(value);
         if (k == "severity") {
           settings_.severity_overrides[std::string(rule->id)] =
               *parse_severity(choice(value, k, {"info", "warning", "error"}));

@@ -89,6 +89,8 @@ struct Settings {
   bool allow_outside_root = false;
   std::map<std::string, Severity, std::less<>> severity_overrides;
   std::map<std::string, std::map<std::string, double, std::less<>>, std::less<>> rule_options;
+  // Where each `[rules.<id>]` key was set ("asset-lint.toml:12"), keyed "<id>.<key>".
+  std::map<std::string, std::string, std::less<>> rule_setting_origins;
 
   std::optional<double> rule_option(std::string_view rule, std::string_view option) const;
   Severity severity_for(std::string_view rule, Severity default_severity) const;

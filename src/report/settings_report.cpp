@@ -109,11 +109,15 @@ void write_settings(std::ostream& out, const std::string& file, const Settings& 
     const auto options = settings.rule_options.find(rule->id);
     if (severity == settings.severity_overrides.end() && options == settings.rule_options.end()) continue;
     out << fmt::format("\n[rules.{}]\n", rule->id);
+    const auto origin_of = [&](std::string_view key) {
+      const auto it = settings.rule_setting_origins.find(fmt::format("{}.{}", rule->id, key));
+      return it == settings.rule_setting_origins.end() ? config_origin : it->second;
+    };
     if (severity != settings.severity_overrides.end())
-      line(out, fmt::format("severity = \"{}\"", severity_name(severity->second)), config_origin);
+      line(out, fmt::format("severity = \"{}\"", severity_name(severity->second)), origin_of("severity"));
     if (options != settings.rule_options.end())
       for (const auto& [name, value] : options->second)
-        line(out, fmt::format("{} = {}", name, format_number(value)), config_origin);
+        line(out, fmt::format("{} = {}", name, format_number(value)), origin_of(name));
   }
 }
 
