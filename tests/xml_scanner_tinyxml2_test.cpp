@@ -168,3 +168,16 @@ TEST_CASE("xml scanner: attribute values decode entities and line breaks as XML 
   CHECK_FALSE(xml::attribute_value_needs_decoding("0 0 1\n"));
   CHECK(xml::attribute_value_needs_decoding("a&amp;b"));
 }
+
+TEST_CASE("xml scanner: a NUL byte anywhere in the document stops it, as it stops tinyxml2", "[urdf][xml]") {
+  using namespace std::string_literals;
+  for (const std::string& text : {"<robot><!-- a\0b --></robot>"s, "<robot name=\"a\0b\"/>"s,
+                                  "<?xml version=\"1.0\"?><!-- \0 --><robot/>"s, "<robot/><!-- \0 -->"s}) {
+    INFO(text);
+    const xml::XmlScan scan = xml::scan_xml(text);
+    REQUIRE(scan.problems.size() == 1);
+    CHECK(scan.problems.back().offset == text.find('\0'));
+    CHECK(scan.problems.back().message == "NUL byte inside the XML document");
+    CHECK_FALSE(scan.recoverable);
+  }
+}
