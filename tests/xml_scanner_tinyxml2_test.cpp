@@ -85,7 +85,7 @@ std::vector<std::string> mutants(const std::string& text) {
         "<a 1b='1'/>", "<a b$='1'/>", "<?pi data?>", "<?xml version=\"1.0\"?>", "<?xml-stylesheet x?>",
         "<!DOCTYPE x>", "<![CDATA[<x>]]>", "<a b=\"&#x41;&#66;&amp;&lt;&gt;&quot;&apos;\"/>",
         "<a b=\"&unknown; &amp\"/>", "<a b=\"l1\r\nl2\rl3\n\rl4\"/>", "<a b=\"\xc3\xa9\" c='\"'/>",
-        "<a></a >", "<a></ a>", "<a/ >", "<a b=\"1\" b=\"2\"/>", "text & more", "<a>", "</a>"}) {
+        "<a></a >", "<a></ a>", "<!-->x-->", "<!-->", "<a/ >", "<a b=\"1\" b=\"2\"/>", "text & more", "<a>", "</a>"}) {
     std::string m = text;
     m.insert(inner, insert);
     out.push_back(std::move(m));
@@ -105,6 +105,7 @@ std::vector<std::string> mutants(const std::string& text) {
   out.push_back("<!-- c --><?xml version=\"1.0\"?>" + text.substr(scan.tags[0].offset));
   out.push_back("<!-- c --><?pi x?>" + text.substr(scan.tags[0].offset));
   out.push_back("<?pi x?><?xml version=\"1.0\"?>" + text.substr(scan.tags[0].offset));
+  out.push_back("<?>" + text.substr(scan.tags[0].offset));
   out.push_back(text + "<?pi x?>");
   return out;
 }

@@ -196,12 +196,12 @@ class Scanner {
           return;
         }
         scan_.instructions.push_back(pos);
-        if (!skip_to(pos, "?>", "unterminated processing instruction '<?'")) return;
+        if (!skip_to(pos, "<?", "?>", "unterminated processing instruction '<?'")) return;
         continue;
       }
       markup_seen = true;
       if (text_.compare(pos, 4, "<!--") == 0) {
-        if (!skip_to(pos, "-->", "unterminated comment '<!--'")) return;
+        if (!skip_to(pos, "<!--", "-->", "unterminated comment '<!--'")) return;
         continue;
       }
       if (text_.compare(pos, 2, "<!") == 0) {
@@ -213,8 +213,10 @@ class Scanner {
     }
   }
 
-  bool skip_to(std::size_t& pos, std::string_view terminator, std::string_view message) {
-    const std::size_t end = text_.find(terminator, pos);
+  // Past `opener` at pos, to the end of the first `terminator` after it ("<!-->" and "<?>"
+  // are not closed).
+  bool skip_to(std::size_t& pos, std::string_view opener, std::string_view terminator, std::string_view message) {
+    const std::size_t end = text_.find(terminator, pos + opener.size());
     if (end == std::string_view::npos) {
       problem(pos, 2, std::string(message), false);
       pos = text_.size();
@@ -260,12 +262,12 @@ class Scanner {
       // Most markup is a start tag: the other kinds only when the byte after '<' says so.
       const char kind = pos + 1 < text_.size() ? text_[pos + 1] : '\0';
       if (kind == '!' && text_.compare(pos, 4, "<!--") == 0) {
-        if (!skip_to(pos, "-->", "unterminated comment '<!--'")) return;
+        if (!skip_to(pos, "<!--", "-->", "unterminated comment '<!--'")) return;
         continue;
       }
       if (kind == '!' && text_.compare(pos, 9, "<![CDATA[") == 0) {
         scan_.doctype_or_cdata = true;
-        if (!skip_to(pos, "]]>", "unterminated CDATA section")) return;
+        if (!skip_to(pos, "<![CDATA[", "]]>", "unterminated CDATA section")) return;
         continue;
       }
       if (kind == '?') {
@@ -409,7 +411,7 @@ class Scanner {
     while (pos < text_.size()) {
       if (is_space(text_[pos])) { ++pos; continue; }
       if (text_.compare(pos, 4, "<!--") == 0) {
-        if (!skip_to(pos, "-->", "unterminated comment '<!--'")) return;
+        if (!skip_to(pos, "<!--", "-->", "unterminated comment '<!--'")) return;
         scan_.document_end = pos;
         continue;
       }
