@@ -110,13 +110,7 @@ std::optional<double> target_delta(const Joint& joint, const Settings& settings)
 }
 
 physics::Servo mujoco_servo(const DrivenJoint& driven, double inertia) {
-  physics::Servo servo;
-  servo.inertia = inertia;
-  servo.stiffness = driven.stiffness;
-  const Joint& joint = *driven.joint;
-  servo.joint_damping = joint.joint_damping ? std::max(0.0, joint.joint_damping->value) : 0.0;
-  servo.actuator_damping = std::max(0.0, driven.damping - servo.joint_damping);
-  return servo;
+  return physics::mujoco_servo(*driven.joint, driven.stiffness, driven.damping, inertia);
 }
 
 }  // namespace assetlint::rules

@@ -17,6 +17,7 @@
 #include "pipeline/lint.h"
 #include "fix/fixer.h"
 #include "fix/writer.h"
+#include "formats/mjcf/mjcf_reader.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -39,6 +40,15 @@ std::vector<fs::path> asset_files(const fs::path& dir, std::initializer_list<con
   return files;
 }
 std::vector<fs::path> urdf_files(const fs::path& dir) { return asset_files(dir, {".urdf"}); }
+
+// URDF, USDA and MJCF files under `dir` (an .xml counts when its root is <mujoco>), sorted.
+std::vector<fs::path> all_asset_files(const fs::path& dir) {
+  std::vector<fs::path> files = asset_files(dir, {".urdf", ".usda"});
+  for (const auto& xml : asset_files(dir, {".xml"}))
+    if (mjcf::looks_like_mjcf(test::read_file(xml))) files.push_back(xml);
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 // The settings the CLI would use for `file` below `root`: the nearest asset-lint.toml
 // above it (none: the defaults), its path shown relative to `root` like the fixture
@@ -260,7 +270,7 @@ void check_fix_properties(const fs::path& source, const fs::path& tree = {}) {
 }  // namespace
 
 TEST_CASE("fix: every fixtures/fix case fixes to exactly its .fixed bytes", "[fix]") {
-  const auto files = asset_files(test::fixtures_dir() / "fix", {".urdf", ".usda"});
+  const auto files = all_asset_files(test::fixtures_dir() / "fix");
   REQUIRE(files.size() >= 20);
   const bool update = std::getenv("ASSET_LINT_UPDATE_EXPECTED") != nullptr;
   std::set<std::string> rules_covered;
@@ -294,9 +304,9 @@ TEST_CASE("fix: every fixtures/fix case fixes to exactly its .fixed bytes", "[fi
   // Every fixable rule in each format where it has something to edit. URDF has no drive
   // gains (they come from asset-lint.toml, which fixes never edit) and no mimic compliance;
   // USD angles are always degrees, so there is no degree guessing to fix.
-  const std::set<std::string> both{".urdf", ".usda"}, usda{".usda"}, urdf{".urdf"};
+  const std::set<std::string> both{".urdf", ".usda"}, usda{".usda"}, urdf{".urdf"}, usda_mjcf{".usda", ".xml"};
   const std::map<std::string, std::set<std::string>> want{
-      {"drive-damping-ratio", usda},     {"drive-max-force", both},         {"drive-natural-frequency", usda},
+      {"drive-damping-ratio", usda_mjcf}, {"drive-max-force", both},         {"drive-natural-frequency", usda},
       {"joint-max-velocity", both},      {"limits-inverted", both},         {"mimic-copied-drive-gains", usda},
       {"mimic-limit-conflict", both},    {"mimic-max-velocity", both},      {"structure-undefined-link", urdf}, {"units-angle-degrees", urdf},
       {"units-velocity-implausible", both}, {"unused-suppression", both}};
@@ -322,7 +332,7 @@ TEST_CASE("fix: CRLF, BOM, comments, quoting and trailing bytes survive", "[fix]
 
 TEST_CASE("fix: properties hold for every fixture", "[fix]") {
   // Each in a copy of fixtures/, with its layers and the nearest asset-lint.toml.
-  const auto files = asset_files(test::fixtures_dir(), {".urdf", ".usda"});
+  const auto files = all_asset_files(test::fixtures_dir());
   REQUIRE(files.size() >= 40);
   for (const auto& file : files) check_fix_properties(file, test::fixtures_dir());
 }
@@ -336,4 +346,8 @@ TEST_CASE("fix: properties hold for every corpus file", "[fix][corpus]") {
   const auto files = urdf_files(corpus / "urdf");
   REQUIRE_FALSE(files.empty());
   for (const auto& file : files) check_fix_properties(file);
+  // MJCF models, each in its own directory with the files it includes.
+  const auto models = all_asset_files(corpus / "mjcf");
+  REQUIRE_FALSE(models.empty());
+  for (const auto& file : models) check_fix_properties(file, file.parent_path());
 }

@@ -199,3 +199,38 @@ TEST_CASE("simulate and tune on the Robotiq stack of the corpus (configuration l
                        "(unauthored mass: '/Robotiq_2F_85/Robotiq_2F_85/base_link'") != std::string::npos);
   CHECK(run_cli({"tune", top, "--root", stack.string()}).exit_code == 0);
 }
+
+TEST_CASE("simulate on MJCF steps MuJoCo's integrator, not PhysX's row", "[simulate][cli][mjcf]") {
+  // The same stiff, heavily damped shoulder servo (h·nf = 2.11, kv 100) under implicitfast and Euler.
+  const auto run = [](const std::string& fixture) {
+    const auto r = run_cli({"simulate", fixture, "--output-format", "json"}, test::fixtures_dir() / "rules" /
+                                                                              "drive-natural-frequency");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(r.out);
+  };
+  const auto fast = run("servo_implicitfast.xml");
+  CHECK(fast["engine"] == "MuJoCo (implicitfast)");
+  CHECK(fast["integrator"] == "implicitfast");
+  CHECK(fast["implicit_factor"].is_null());
+  CHECK(fast["h_s"].get<double>() == Approx(0.002));
+  CHECK(fast["implicit"]["diverged"] == false);
+  // Stepped by physics::mujoco_step (checked against libmujoco's trajectory): the force range
+  // saturates the servo on the way, and it settles within 0.05 % of the 360° move.
+  CHECK(fast["implicit"]["force_clamped_s"].get<double>() > 0.1);
+  CHECK(fast["implicit"]["time_to_98_s"].get<double>() == Approx(0.316).margin(0.002));
+  CHECK(std::abs(fast["implicit"]["steady_state_error"].get<double>()) < 1e-3);
+  const std::string setup = fast["setup"].dump();
+  CHECK(setup.find("Integrator: implicitfast (servo_implicitfast.xml:4): one step's spectral radius 0.96") !=
+        std::string::npos);
+
+  // Euler takes kv explicitly: MuJoCo's own step is the explicit spring, bounded only by the force range.
+  const auto euler = run("servo_euler.xml");
+  CHECK(euler["engine"] == "MuJoCo (Euler)");
+  CHECK(euler["implicit"]["velocity_sign_changes"] == euler["explicit"]["velocity_sign_changes"]);
+  CHECK(euler["implicit"]["velocity_sign_changes"].get<int>() > 100);
+  const auto text = run_cli({"simulate", "servo_euler.xml"}, test::fixtures_dir() / "rules" / "drive-natural-frequency");
+  CHECK(text.out.find("MuJoCo (Euler) is unstable at this step (spectral radius 115 per step); only the force range "
+                      "keeps it bounded. Under implicitfast, which solves kv implicitly, it would be stable (spectral "
+                      "radius 0.96).\n") != std::string::npos);
+}

@@ -151,3 +151,46 @@ TEST_CASE("tune --apply on USD: per-degree gains, max force and velocity, none o
   CHECK(again.err == "asset-lint tune: nothing to change\n");
   CHECK(read_file(dir.path() / "gripper.usda") == after);
 }
+
+TEST_CASE("tune --apply on MJCF: the actuator's kp, kv and whole forcerange; no velocity; class values kept",
+          "[tune][cli][mjcf]") {
+  test::TempDir dir;
+  std::string text = read_file(test::fixtures_dir() / "mjcf" / "robotiq_2f85" / "robotiq_2f85.xml");
+  const std::string actuator = R"(kp="275" kv="0.06073" forcerange="-24 24")";
+  const auto at = text.find(actuator);
+  REQUIRE(at != std::string::npos);
+  const std::string weak = R"(kp="99.48" kv="0.06073" forcerange="-12 12")";
+  text.replace(at, actuator.size(), weak);
+  write_file(dir.path() / "gripper.xml", text);
+  const std::string velocity_note =
+      "asset-lint tune: note: MuJoCo has no joint velocity limit: the recommended 2.9 rad/s for joint 'finger_joint' "
+      "is not written\n";
+  auto applied = run_cli(tune("gripper.xml", {"--apply"}), dir.path());
+  CHECK(applied.exit_code == 0);
+  CHECK(applied.err == velocity_note +
+                           "asset-lint tune: gripper.xml: <actuator kp> 99.48 → 275\n"
+                           "asset-lint tune: gripper.xml: <actuator kv> 0.06073 → 0.06089\n"
+                           "asset-lint tune: gripper.xml: <actuator forcerange> -12 12 → -24 24\n");
+  std::string expected = text;
+  expected.replace(at, weak.size(), R"(kp="275" kv="0.06089" forcerange="-24 24")");
+  CHECK(read_file(dir.path() / "gripper.xml") == expected);
+  auto again = run_cli(tune("gripper.xml", {"--apply"}), dir.path());
+  CHECK(again.err == velocity_note + "asset-lint tune: nothing to change\n");
+
+  // kp from a default class that a second actuator uses too: not edited, and said so.
+  std::string shared = expected;
+  const std::string own_kp = R"(<position name="fingers" joint="finger_joint" kp="275")";
+  const auto kp_at = shared.find(own_kp);
+  REQUIRE(kp_at != std::string::npos);
+  shared.replace(kp_at, own_kp.size(), R"(<position name="fingers" class="servo" joint="finger_joint")");
+  shared.replace(shared.find("  <default>\n"), 12,
+                 "  <default>\n    <default class=\"servo\"><position kp=\"99.48\"/></default>\n");
+  shared.replace(shared.find("  </actuator>"), 13,
+                 "    <position name=\"spare\" class=\"servo\" joint=\"right_outer_knuckle_joint\"/>\n  </actuator>");
+  write_file(dir.path() / "shared.xml", shared);
+  auto kept = run_cli(tune("shared.xml", {"--apply", "--joint", "finger_joint"}), dir.path());
+  INFO(kept.out);
+  CHECK(kept.err.find("asset-lint tune: note: kp of joint 'finger_joint' is written once, in default class 'servo', "
+                      "which 2 elements use: not edited; give its actuator its own kp\n") != std::string::npos);
+  CHECK(read_file(dir.path() / "shared.xml").find("<position kp=\"99.48\"/>") != std::string::npos);
+}

@@ -241,3 +241,33 @@ TEST_CASE("tune: bad input is one line naming it, exit 2", "[tune][cli]") {
   CHECK(none.err == "asset-lint tune: error: fixed.urdf: the asset has no driven joint (no revolute or prismatic "
                     "joint that is not a mimic)\n");
 }
+
+TEST_CASE("tune on MJCF: MuJoCo's bound and one MuJoCo step instead of PhysX's row", "[tune][cli][mjcf]") {
+  // The guide's gripper in MJCF at its own 4 ms timestep and MuJoCo's default Euler integrator.
+  std::vector<std::string> args = {"tune", "fixtures/mjcf/robotiq_2f85/robotiq_2f85.xml", "--output-format", "json"};
+  for (std::size_t i = 0; i + 1 < kGuideFlags.size(); i += 2)
+    if (kGuideFlags[i] != "--rate" && kGuideFlags[i] != "--position-iterations")
+      args.insert(args.end(), {kGuideFlags[i], kGuideFlags[i + 1]});
+  auto r = run_cli(args);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto doc = nlohmann::json::parse(r.out);
+  // The spec side of the guide is format-blind: the same force, stiffness and damping.
+  CHECK(doc["summary"]["max_drive_force_nm"].get<double>() == 24.0);
+  CHECK(doc["summary"]["stiffness_nm_per_rad"].get<double>() == Approx(275.0).epsilon(1e-3));
+  CHECK(doc["summary"]["damping_nms_per_rad"].get<double>() == Approx(0.0609).epsilon(2e-3));
+  bool stepped = false;
+  for (const auto& step : doc["steps"]) {
+    CHECK(step["name"] != "implicit_factor");
+    if (step["name"] == "natural_frequency")
+      CHECK(step["notes"][0].get<std::string>().find("above 1/timestep = 250 rad/s: MuJoCo steps the spring once per "
+                                                     "timestep; unless the integrator damps it stably") !=
+            std::string::npos);
+    if (step["name"] != "mujoco_step") continue;
+    stepped = true;
+    // 275 N·m/rad and critical damping on 8.57e-5 kg·m² at 4 ms: h·nf = 7.2, Euler's explicit kv.
+    CHECK(step["result"]["value"].get<double>() == Approx(52.23).epsilon(1e-3));
+    CHECK(step["notes"][1] == "It grows every step: MuJoCo needs a smaller <option timestep> or more armature.");
+  }
+  CHECK(stepped);
+}

@@ -40,14 +40,14 @@ bool write_text_file(const std::string& path, const std::string& text, std::stri
 }  // namespace
 
 int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"asset-lint simulate: steps the driven joint as PhysX's articulation drive does, beside the explicit "
-               "spring at the same step",
+  CLI::App app{"asset-lint simulate: steps the driven joint as PhysX's articulation drive (or, for MJCF, MuJoCo) does, beside "
+               "the explicit spring at the same step",
                "asset-lint simulate"};
   std::string path, format = "text", solver, inertia_choice;
   std::optional<std::string> joint_name, config, from_text, to_text, load_text, duration_text = std::string("1"), plot,
       csv, rate_text, iterations_text;
   bool from_open = false, to_closed = false;
-  app.add_option("asset", path, "The .urdf or .usda file")->required();
+  app.add_option("asset", path, "The .urdf, .usda or MJCF .xml file")->required();
   app.add_option("--joint", joint_name, "The driven joint (default: [gripper] driven_joint, else the only driven joint)");
   auto* from = app.add_option("--from", from_text, "Start position: degrees (revolute) or metres (prismatic)");
   auto* open = app.add_flag("--from-open", from_open, "Start at the lower limit (the default)");
@@ -174,6 +174,9 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   SimulationSetup setup;
   setup.row = physics::drive_row(rate, drive->stiffness->value, drive->damping ? drive->damping->value : 0.0,
                                  drive->type, inertia);
+  if (rate.solver == physics::Solver::MuJoCo && drive->type == DriveType::Force)
+    setup.mujoco = MujocoSetup{rate.integrator, physics::mujoco_servo(*joint, setup.row.stiffness, setup.row.damping,
+                                                                      inertia)};
   const Quantity* force = drive->max_force ? &*drive->max_force : joint->effort ? &*joint->effort : nullptr;
   if (force && force->value > 0) setup.limits.force.max_force = force->value;
   if (joint->velocity && joint->velocity->value > 0) setup.limits.max_velocity = joint->velocity->value;
@@ -217,8 +220,17 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
                   articulated.known ? fmt::format("{} {}", format_number(articulated.value, 3), inertia_unit)
                                     : "unknown (" + unknown(articulated) + ")",
                   lighter.known ? lighter.describe() : std::string("unknown")),
-      fmt::format("Row: x = 1/(1 + h·(h·k + d)/I) = {}; h·nf = {} s × {} rad/s = {}", format_number(setup.row.x(), 3),
-                  format_number(setup.row.h, 3), format_number(nf, 4), format_number(setup.row.h * nf, 3)),
+      setup.mujoco
+          ? fmt::format("Integrator: {} ({}): one step's spectral radius {} within the force range; h·nf = {} s × {} "
+                        "rad/s = {}",
+                        physics::integrator_name(rate.integrator), rate.integrator_origin,
+                        format_number(physics::servo_step(rate.integrator, setup.row.h, setup.mujoco->servo)
+                                          .spectral_radius(),
+                                      3),
+                        format_number(setup.row.h, 3), format_number(nf, 4), format_number(setup.row.h * nf, 3))
+          : fmt::format("Row: x = 1/(1 + h·(h·k + d)/I) = {}; h·nf = {} s × {} rad/s = {}",
+                        format_number(setup.row.x(), 3), format_number(setup.row.h, 3), format_number(nf, 4),
+                        format_number(setup.row.h * nf, 3)),
   };
   if (load) context.setup.push_back(fmt::format("Load: {} {} against the motion", format_number(*load, 4), context.force_unit));
   const GripperSpec& g = settings.gripper;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/units.h"
+#include "physics/servo_step.h"
 #include "util/numbers.h"
 #include "util/svg_chart.h"
 
@@ -51,6 +52,10 @@ nlohmann::json metrics_json(const Metrics& m) {
           {"stalled", m.stalled}};
 }
 
+std::string engine_legend(const SimulationRun& run) {
+  return run.engine == "implicit (PhysX)" ? "implicit drive (PhysX)" : run.engine;
+}
+
 std::string verdict(const SimulationContext& c, const SimulationSetup& s, const SimulationRun& run) {
   const Metrics& m = run.implicit_metrics;
   std::string text;
@@ -59,7 +64,7 @@ std::string verdict(const SimulationContext& c, const SimulationSetup& s, const 
                         "force {} {}.\n",
                         format_number(shown(c, m.steady_state_error), 3), position_unit(c),
                         format_number(s.limits.force.max_force, 4), c.force_unit);
-  else if (m.diverged) text += "PhysX's implicit drive diverges here.\n";
+  else if (m.diverged) text += s.mujoco ? run.engine + " diverges here.\n" : "PhysX's implicit drive diverges here.\n";
   else if (std::abs(s.load) > s.limits.force.max_average_force(s.row.dt) && m.velocity_clamped_time > 0 && m.time_to_90)
     text += fmt::format("The load ({} {}) exceeds the max force, yet the joint moves on: the max joint velocity clamp "
                         "after each {} solve removes the velocity the load adds (PhysX 5.6.1 does the same).\n",
@@ -68,11 +73,26 @@ std::string verdict(const SimulationContext& c, const SimulationSetup& s, const 
   const std::string criterion = fmt::format("h²·k/I + 2·h·d/I = {} and h·d/I = {} (stable only below 4 and 2)",
                                             format_number(s.row.h * s.row.h * s.row.stiffness * r + 2 * s.row.h * s.row.damping * r, 3),
                                             format_number(s.row.h * s.row.damping * r, 3));
+  if (s.mujoco) {
+    const double radius = physics::servo_step(s.mujoco->integrator, s.row.h, s.mujoco->servo).spectral_radius();
+    const double implicit = physics::servo_step(physics::MujocoIntegrator::ImplicitFast, s.row.h, s.mujoco->servo)
+                                .spectral_radius();
+    if (radius >= 1 && !m.diverged)
+      text += fmt::format("{} is unstable at this step (spectral radius {} per step); only the force range keeps it "
+                          "bounded.{}\n",
+                          run.engine, format_number(radius, 3),
+                          implicit < 1 ? fmt::format(" Under implicitfast, which solves kv implicitly, it would be "
+                                                     "stable (spectral radius {}).",
+                                                     format_number(implicit, 3))
+                                       : std::string());
+  }
+  const std::string engine = s.mujoco ? run.engine : "PhysX's implicit row";
   if (run.explicit_metrics.diverged && !m.diverged)
-    text += "The explicit spring diverges at this step where PhysX's implicit row stays stable: " + criterion + ".\n";
+    text += "The explicit spring diverges at this step where " + engine + " stays stable: " + criterion + ".\n";
   else if (!run.explicit_stable)
     text += "The explicit spring is unstable at this step, " + criterion +
-            "; only the max force and max velocity clamps keep it bounded. PhysX's implicit row is stable at any step.\n";
+            "; only the max force and max velocity clamps keep it bounded." +
+            (s.mujoco ? "\n" : " PhysX's implicit row is stable at any step.\n");
   if (c.spec_close_time) {
     text += fmt::format("Close time: {} to 98 % against the spec's {} s ({}).\n", seconds(m.time_to_98),
                         format_number(*c.spec_close_time, 3), c.spec_origin);
@@ -89,8 +109,8 @@ void write_simulation_text(std::ostream& out, const SimulationContext& c, const 
                      format_number(s.frames * s.row.dt, 4));
   for (const auto& line : c.setup) out << line << "\n";
   const auto implicit = rows(c, run.implicit_metrics), explicit_rows = rows(c, run.explicit_metrics);
-  std::size_t w0 = 22, w1 = 22;
-  out << fmt::format("\n{:<{}}{:<{}}{}\n", "", w0, "implicit (PhysX)", w1, "explicit spring");
+  const std::size_t w0 = 22, w1 = std::max<std::size_t>(22, columns(run.engine) + 2);
+  out << fmt::format("\n{:<{}}{:<{}}{}\n", "", w0, run.engine, w1, "explicit spring");
   for (std::size_t i = 0; i < implicit.size(); ++i)
     out << fmt::format("{:<{}}{:<{}}{}\n", implicit[i].first, w0, implicit[i].second, w1, explicit_rows[i].second);
   const std::string v = verdict(c, s, run);
@@ -116,7 +136,10 @@ void write_simulation_json(std::ostream& out, const SimulationContext& c, const 
       {"damping", s.row.damping},
       {"inertia", c.inertia},
       {"inertia_origin", c.inertia_origin},
-      {"implicit_factor", s.row.x()},
+      {"engine", run.engine},
+      {"integrator", s.mujoco ? nlohmann::json(std::string(physics::integrator_name(s.mujoco->integrator)))
+                              : nlohmann::json(nullptr)},
+      {"implicit_factor", s.mujoco ? nlohmann::json(nullptr) : nlohmann::json(s.row.x())},
       {"max_force", std::isfinite(s.limits.force.max_force) ? nlohmann::json(s.limits.force.max_force) : nlohmann::json(nullptr)},
       {"max_velocity", std::isfinite(s.limits.max_velocity) ? nlohmann::json(s.limits.max_velocity) : nlohmann::json(nullptr)},
       {"load", s.load},
@@ -171,7 +194,7 @@ std::string simulation_svg(const SimulationContext& c, const SimulationSetup& s,
   const double lo = std::min(shown(c, s.from), shown(c, s.target)), hi = std::max(shown(c, s.from), shown(c, s.target));
   ChartPanel position;
   position.y_label = fmt::format("position ({})", position_unit(c));
-  position.series.push_back(series(run.implicit, true, "implicit drive (PhysX)", "#1f5fbf", false));
+  position.series.push_back(series(run.implicit, true, engine_legend(run), "#1f5fbf", false));
   position.series.push_back(series(run.explicit_spring, true,
                                    run.explicit_metrics.diverged ? "explicit spring (diverges)" : "explicit spring",
                                    "#d9480f", true));
@@ -179,7 +202,7 @@ std::string simulation_svg(const SimulationContext& c, const SimulationSetup& s,
   position.clip = std::pair{lo - span, hi + span};
   ChartPanel force;
   force.y_label = fmt::format("drive force ({})", c.force_unit);
-  force.series.push_back(series(run.implicit, false, "implicit drive (PhysX)", "#1f5fbf", false));
+  force.series.push_back(series(run.implicit, false, engine_legend(run), "#1f5fbf", false));
   force.series.push_back(series(run.explicit_spring, false, "explicit spring", "#d9480f", true));
   const double cap = s.limits.force.max_average_force(s.row.dt);
   if (std::isfinite(cap)) {
@@ -194,7 +217,7 @@ std::string simulation_svg(const SimulationContext& c, const SimulationSetup& s,
         else
           force.bands.push_back({run.implicit[i - 1].time, run.implicit[i].time, "#862e9c"});
       }
-    force.band_label = "implicit drive at max force";
+    force.band_label = s.mujoco ? "servo at its force range" : "implicit drive at max force";
   } else {
     // No force limit: keep a diverging explicit spring from setting the scale; the spring
     // force over the whole step bounds what a sane drive shows.

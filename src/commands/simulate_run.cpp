@@ -1,11 +1,16 @@
 #include "commands/simulate_run.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
+
+#include "physics/mujoco_step.h"
 
 namespace assetlint::commands {
 
 SimulationRun run_simulation(const SimulationSetup& setup) {
   SimulationRun run;
+  if (setup.mujoco) run.engine = fmt::format("MuJoCo ({})", physics::integrator_name(setup.mujoco->integrator));
   const double dt = setup.row.dt;
   const physics::DriveTarget target{setup.target, 0.0};
   physics::JointState implicit{setup.from, 0.0}, explicit_state{setup.from, 0.0};
@@ -15,7 +20,9 @@ SimulationRun run_simulation(const SimulationSetup& setup) {
   bool explicit_running = true;
   for (int f = 1; f <= setup.frames; ++f) {
     const double t = f * dt;
-    auto step = physics::step_frame(setup.row, setup.limits, implicit, target, setup.load);
+    auto step = setup.mujoco ? physics::mujoco_step(setup.mujoco->integrator, dt, setup.mujoco->servo, setup.limits,
+                                                    implicit, target, setup.load)
+                             : physics::step_frame(setup.row, setup.limits, implicit, target, setup.load);
     implicit = step.state;
     run.implicit.push_back({t, implicit.position, implicit.velocity, step.average_force(dt)});
     if (explicit_running) {

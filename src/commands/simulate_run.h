@@ -8,11 +8,19 @@
 
 #include "commands/simulate_metrics.h"
 #include "physics/drive_row.h"
+#include "physics/servo_step.h"
 
 namespace assetlint::commands {
 
+// An MJCF asset is stepped as MuJoCo steps it, not by PhysX's row.
+struct MujocoSetup {
+  physics::MujocoIntegrator integrator = physics::MujocoIntegrator::Euler;
+  physics::Servo servo;
+};
+
 struct SimulationSetup {
-  physics::DriveRow row;
+  physics::DriveRow row;  // the step, rate and gains; PhysX's row unless `mujoco` is set
+  std::optional<MujocoSetup> mujoco;
   physics::FrameLimits limits;
   double from = 0;    // rad (m)
   double target = 0;  // rad (m)
@@ -21,7 +29,8 @@ struct SimulationSetup {
 };
 
 struct SimulationRun {
-  std::vector<Sample> implicit;  // one sample per frame, the first at t = 0
+  std::string engine = "implicit (PhysX)";  // what stepped `implicit`: "MuJoCo (implicitfast)" for MJCF
+  std::vector<Sample> implicit;  // the engine's drive: one sample per frame, the first at t = 0
   std::vector<Sample> explicit_spring;  // stops at divergence
   Metrics implicit_metrics;
   Metrics explicit_metrics;

@@ -48,7 +48,7 @@ int run_tune(const std::vector<std::string>& args, std::ostream& out, std::ostre
   std::string format = "text";
   bool apply = false, diff = false;
   std::vector<std::string> flag_text(std::size(kSpecFlags));
-  app.add_option("asset", path, "The .urdf or .usda file")->required();
+  app.add_option("asset", path, "The .urdf, .usda or MJCF .xml file")->required();
   app.add_option("--joint", joint, "The driven joint (default: [gripper] driven_joint, else the only driven joint)");
   for (std::size_t i = 0; i < std::size(kSpecFlags); ++i) app.add_option(kSpecFlags[i].name, flag_text[i], kSpecFlags[i].help);
   app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the asset)");

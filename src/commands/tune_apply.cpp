@@ -13,6 +13,7 @@
 #include "fix/edits.h"
 #include "fix/fixer.h"
 #include "fix/writer.h"
+#include "formats/mjcf/mjcf_edit.h"
 #include "formats/urdf/urdf_edit.h"
 #include "formats/usda/usda_edit.h"
 #include "util/numbers.h"
@@ -44,6 +45,7 @@ class Planner {
 
   ApplyPlan run() {
     if (asset_.format == SourceFormat::Urdf) urdf();
+    else if (asset_.format == SourceFormat::Mjcf) mjcf();
     else usd();
     if (plan_.error) return std::move(plan_);
     for (auto& [file, edits] : edits_) {
@@ -180,9 +182,76 @@ class Planner {
     }
   }
 
+  // MJCF: the actuator's own kp, kv and forcerange. A value read from biasprm or from a
+  // default class other elements share is left for the author, with a note.
+  void mjcf() {
+    const TuneRecommendation& r = d_.recommended;
+    if (!joint_.drive) {
+      plan_.notes.push_back(fmt::format("joint '{}' has no <position> or affine <general> actuator: stiffness, "
+                                        "damping and max force are not written",
+                                        joint_.name.text));
+    } else {
+      const Drive& drive = *joint_.drive;
+      const auto gain = [&](const OptQuantity& q, std::optional<double> value, const char* attribute) {
+        if (!value) return;
+        if (!q || !q->span.valid() || !mjcf::read_from_attribute(asset_.source(q->span.file), *q, attribute)) {
+          plan_.notes.push_back(fmt::format("the actuator of joint '{}' writes no {}=\"…\" of its own (it comes from "
+                                            "biasprm, or the joint's damping adds to it): set {} by hand",
+                                            joint_.name.text, attribute, gain_text(*value)));
+          return;
+        }
+        if (shared(*q, attribute)) return;
+        rewrite(*q, gain_text(q->authored_for(*value)), fmt::format("<actuator {}>", attribute));
+      };
+      gain(drive.stiffness, r.stiffness, "kp");
+      gain(drive.damping, r.damping, "kv");
+      if (r.max_force) max_force_range(drive, *r.max_force);
+    }
+    if (r.max_velocity)
+      plan_.notes.push_back(fmt::format("MuJoCo has no joint velocity limit: the recommended {} {} for joint '{}' is "
+                                        "not written",
+                                        velocity_text(*r.max_velocity),
+                                        unit_symbol(is_angular(joint_.type) ? Unit::RadianPerSecond : Unit::MeterPerSecond),
+                                        joint_.name.text));
+  }
+
+  void max_force_range(const Drive& drive, double max_force) {
+    if (!drive.max_force || !drive.max_force->span.valid()) {
+      plan_.notes.push_back(fmt::format("the actuator of joint '{}' has no forcerange: add forcerange=\"-{} {}\" by "
+                                        "hand",
+                                        joint_.name.text, force_text(max_force), force_text(max_force)));
+      return;
+    }
+    const Quantity& bound = *drive.max_force;
+    if (shared(bound, "forcerange")) return;
+    const SourceFile& source = asset_.source(bound.span.file);
+    const auto range = mjcf::rescaled_range(source, bound, std::abs(bound.authored_for(max_force)), force_text);
+    if (!range) {
+      plan_.notes.push_back(fmt::format("the forcerange of joint '{}' is not two numbers: set ±{} by hand",
+                                        joint_.name.text, force_text(max_force)));
+      return;
+    }
+    const std::string_view old_text = source.view().substr(range->offset, range->length);
+    if (old_text == range->replacement) return;
+    changes_[range->file].push_back(fmt::format("<actuator forcerange> {} → {}", old_text, range->replacement));
+    edits_[range->file].push_back(*range);
+  }
+
+  // A value written once for several elements (an MJCF default class): not edited here.
+  bool shared(const Quantity& q, const char* attribute) {
+    const InheritedLiteral* literal = asset_.shared_literal_at(q.span);
+    if (!literal) return false;
+    plan_.notes.push_back(fmt::format("{} of joint '{}' is written once, in {}, which {} elements use: not edited; "
+                                      "give its actuator its own {}",
+                                      attribute, joint_.name.text, literal->owner, literal->uses, attribute));
+    return true;
+  }
+
   // The edited asset must read as before: never leave an unparsable file.
   void check_still_parses() {
-    if (asset_.format != SourceFormat::Usda && asset_.format != SourceFormat::Urdf) return;
+    if (asset_.format != SourceFormat::Usda && asset_.format != SourceFormat::Urdf &&
+        asset_.format != SourceFormat::Mjcf)
+      return;
     OverlayFileSystem overlay(disk());
     bool asset_changed = false;
     for (const PlannedFile& f : plan_.files) {

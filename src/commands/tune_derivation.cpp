@@ -10,6 +10,7 @@
 #include "physics/drive_row.h"
 #include "physics/gripper.h"
 #include "physics/inertia.h"
+#include "physics/servo_step.h"
 #include "physics/sizing.h"
 #include "util/numbers.h"
 
@@ -268,20 +269,71 @@ class Deriver {
                                      : " (unauthored mass: " + links + ")");
   }
 
-  // x = 1/(1 + h·(h·k + d)·r) of PhysX's drive row at the recommended k and d.
-  void implicit_step() {
-    TuneStep& step = add("implicit_factor", "implicit factor of PhysX's drive row at that drive",
-                         "x = 1 / (1 + h·(h·k + d) / I)");
-    step.inputs.push_back(TuneInput{"h", "the step the row is built with", rate_.h(), "s", rate_.step_text(), {}});
+  // k and d from the earlier steps and the inertia the step is judged on (the articulated
+  // one when known, else the lighter link); false when one of them is missing.
+  bool drive_inputs(TuneStep& step) {
     bool ok = from_step(step, "stiffness", "k", "stiffness");
     ok = from_step(step, "damping", "d", "damping") && ok;
-    const bool articulated = articulated_.known;
-    if (articulated)
+    if (articulated_.known)
       step.inputs.push_back(TuneInput{"I", "articulated inertia 1/r", articulated_.value, symbol(units_.inertia),
                                       "the articulation (1/(M⁻¹)ᵢᵢ)", {}});
     else if (auto i = index_of("effective_inertia")) step.inputs.push_back(inertia_input(*i));
     else ok = from_step(step, "effective_inertia", "I", "effective inertia") && ok;
-    if (!ok) return;
+    return ok;
+  }
+
+  // MJCF: one MuJoCo step of the servo at the recommended k and d, under the file's
+  // integrator (physics/servo_step.h); there is no PhysX row to attenuate the spring.
+  void mujoco_step() {
+    TuneStep& step = add("mujoco_step", "one MuJoCo step of that servo",
+                         fmt::format("spectral radius of (q, q̇) → (q′, q̇′) under {}, < 1 is stable",
+                                     physics::integrator_name(rate_.integrator)));
+    step.inputs.push_back(TuneInput{"h", "timestep", rate_.h(), "s", rate_.step_text(), {}});
+    const bool articulated = articulated_.known;
+    if (!drive_inputs(step)) return;
+    const double k = *value_of("stiffness"), d = *value_of("damping");
+    const double inertia = articulated ? articulated_.value : inertia_.value;
+    const auto radius = [&](double i) {
+      return physics::servo_step(rate_.integrator, rate_.h(), physics::mujoco_servo(joint_, k, d, i)).spectral_radius();
+    };
+    step.result = TuneResult{radius(inertia), "", {}, {}};
+    step.notes.push_back(fmt::format("{} ({}) takes the spring explicitly; on the guide's lighter link ({} {}) the "
+                                     "spectral radius is {}, h·nf = {}.",
+                                     physics::integrator_name(rate_.integrator), rate_.integrator_origin,
+                                     format_number(inertia_.value, 3), unit_symbol(units_.inertia),
+                                     format_number(radius(inertia_.value), 3),
+                                     format_number(rate_.h() * physics::natural_frequency(k, inertia_.value), 3)));
+    if (step.result->value >= 1) {
+      const double implicit =
+          physics::servo_step(physics::MujocoIntegrator::ImplicitFast, rate_.h(), physics::mujoco_servo(joint_, k, d, inertia))
+              .spectral_radius();
+      const bool implicit_helps = implicit < 1 && rate_.integrator != physics::MujocoIntegrator::ImplicitFast;
+      step.notes.push_back(fmt::format("It grows every step: MuJoCo needs a smaller <option timestep>{} more armature{}.",
+                                       implicit_helps ? "," : " or",
+                                       implicit_helps ? fmt::format(", or integrator=\"implicitfast\" (spectral radius {})",
+                                                                    format_number(implicit, 3))
+                                                      : std::string()));
+    }
+    if (auto delta = target_delta_value()) {
+      const double spring = k * *delta;
+      const auto force = value_of("max_drive_force");
+      const bool capped = force && *force < spring;
+      step.notes.push_back(fmt::format("Held Δ before the target by a contact, the servo pushes {} {} (k·Δ{}): "
+                                       "MuJoCo applies the actuator force as written, with no row to attenuate it.",
+                                       format_number(capped ? *force : spring, 3), unit_symbol(units_.force),
+                                       capped ? ", capped at the force range" : ""));
+    }
+    if (!articulated) step.notes.push_back(articulated_note());
+  }
+
+  // x = 1/(1 + h·(h·k + d)·r) of PhysX's drive row at the recommended k and d.
+  void implicit_step() {
+    if (rate_.solver == physics::Solver::MuJoCo) return mujoco_step();
+    TuneStep& step = add("implicit_factor", "implicit factor of PhysX's drive row at that drive",
+                         "x = 1 / (1 + h·(h·k + d) / I)");
+    step.inputs.push_back(TuneInput{"h", "the step the row is built with", rate_.h(), "s", rate_.step_text(), {}});
+    const bool articulated = articulated_.known;
+    if (!drive_inputs(step)) return;
     const double k = *value_of("stiffness"), d = *value_of("damping");
     const DriveType type = joint_.drive ? joint_.drive->type : DriveType::Force;
     const auto row = physics::drive_row(rate_, k, d, type, articulated ? articulated_.value : inertia_.value);
@@ -338,13 +390,28 @@ class Deriver {
 
   // "9034 rad/s is 36.1× the 250 Hz rate and below 250 × 64 = 16000 rad/s, the guide's bound"
   std::string against_rate(double nf) const {
-    const double bound = rate_.optimistic_bound();
-    return fmt::format("{} rad/s is {}× the {} Hz rate and {} {} × {} = {} rad/s, the guide's over-optimistic bound "
-                       "(rate × position iterations){}",
-                       format_number(nf, 4), format_number(nf / rate_.timesteps_per_second, 3),
-                       format_number(rate_.timesteps_per_second), nf > bound ? "above" : "within",
-                       format_number(rate_.timesteps_per_second), format_number(rate_.position_iterations),
-                       format_number(bound, 4), nf > bound ? ": prone to fail" : "");
+    const double bound = rate_.frequency_bound();
+    std::string what;
+    switch (rate_.solver) {
+      case physics::Solver::TGS:
+        what = fmt::format("{} × {} = {} rad/s, the guide's over-optimistic bound (rate × position iterations)",
+                           format_number(rate_.timesteps_per_second), rate_.iterations(), format_number(bound, 4));
+        break;
+      case physics::Solver::PGS:
+        what = fmt::format("{} rad/s, the rate: PGS builds the drive row with the whole frame", format_number(bound, 4));
+        break;
+      case physics::Solver::MuJoCo:
+        what = fmt::format("1/timestep = {} rad/s: MuJoCo steps the spring once per timestep", format_number(bound, 4));
+        break;
+    }
+    const std::string verdict =
+        nf <= bound ? ""
+        : rate_.solver == physics::Solver::MuJoCo
+            ? "; unless the integrator damps it stably (drive-natural-frequency judges that), prone to fail"
+            : ": prone to fail";
+    return fmt::format("{} rad/s is {}× the {} Hz rate and {} {}{}", format_number(nf, 4),
+                       format_number(nf / rate_.timesteps_per_second, 3), format_number(rate_.timesteps_per_second),
+                       nf > bound ? "above" : "within", what, verdict);
   }
 
   void current_frequency_step() {

@@ -9,12 +9,6 @@
 namespace assetlint::commands {
 namespace {
 
-// Width on screen: code points, not bytes ("N·m", "μ").
-std::size_t columns(std::string_view text) {
-  std::size_t n = 0;
-  for (unsigned char c : text) n += (c & 0xC0) != 0x80;
-  return n;
-}
 
 std::string with_unit(double value, const std::string& unit, int digits = 4) {
   return unit.empty() ? format_number(value, digits) : fmt::format("{} {}", format_number(value, digits), unit);

@@ -83,4 +83,12 @@ std::string_view joint_type_name(JointType type) {
   return "unknown";
 }
 
+const InheritedLiteral* Asset::shared_literal_at(const Span& span) const {
+  for (const InheritedLiteral& literal : inherited_literals)
+    if (literal.uses > 1 && literal.span.file == span.file && literal.span.offset < span.end() + (span.length == 0) &&
+        span.offset < literal.span.end())
+      return &literal;
+  return nullptr;
+}
+
 }  // namespace assetlint

@@ -157,6 +157,14 @@ struct Scene {
   Span integrator_span;
 };
 
+// A literal that several elements inherit (a value in an MJCF default class): an edit to it
+// changes every one of them.
+struct InheritedLiteral {
+  Span span;
+  std::string owner;      // "default class 'small_actuator'"
+  std::size_t uses = 0;   // how many model values the reader took from it
+};
+
 // One parsed asset: the files it was read from and the robot they describe.
 struct Asset {
   SourceFormat format = SourceFormat::Urdf;
@@ -166,6 +174,10 @@ struct Asset {
   std::vector<Link> links;
   std::vector<Joint> joints;
   Scene scene;
+  std::vector<InheritedLiteral> inherited_literals;  // in (file, offset) order
+
+  // The literal of more than one use that `span` overlaps, if any.
+  const InheritedLiteral* shared_literal_at(const Span& span) const;
 
   // Lookups by name: through the index once index_names() has run on the current links
   // and joints, a linear scan otherwise (assets built by hand in tests). The first

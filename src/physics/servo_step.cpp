@@ -1,5 +1,6 @@
 #include "physics/servo_step.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -20,6 +21,15 @@ std::optional<MujocoIntegrator> parse_integrator(std::string_view keyword) {
                           MujocoIntegrator::ImplicitFast})
     if (keyword == integrator_name(integrator)) return integrator;
   return std::nullopt;
+}
+
+Servo mujoco_servo(const Joint& joint, double stiffness, double damping, double inertia) {
+  Servo servo;
+  servo.inertia = inertia;
+  servo.stiffness = stiffness;
+  servo.joint_damping = joint.joint_damping ? std::max(0.0, joint.joint_damping->value) : 0.0;
+  servo.actuator_damping = std::max(0.0, damping - servo.joint_damping);
+  return servo;
 }
 
 double StepMap::spectral_radius() const {

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string_view>
 
+#include "model/asset.h"
+
 namespace assetlint::physics {
 
 enum class MujocoIntegrator { Euler, RK4, Implicit, ImplicitFast };
@@ -22,6 +24,10 @@ struct Servo {
   double joint_damping = 0;     // the joint's `damping`
   double actuator_damping = 0;  // the actuator's kv
 };
+
+// A MuJoCo joint's servo on `inertia`: the MJCF reader folds the joint's own damping into
+// the drive's `damping`, and MuJoCo's Euler integrator treats the two apart.
+Servo mujoco_servo(const Joint& joint, double stiffness, double damping, double inertia);
 
 // The linear map (q, q̇) → (q', q̇') of one step, and how fast it grows or decays.
 struct StepMap {

@@ -18,6 +18,7 @@
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "physics/articulation.h"
+#include "pipeline/inherited_fixes.h"
 #include "pipeline/suppressions.h"
 #include "rules/registry.h"
 
@@ -86,6 +87,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
       Reporter reporter(rule->info(), diagnostics);
       rule->check(result.asset, settings, reporter);
     }
+    withhold_fixes_on_shared_literals(result.asset, diagnostics);
   }
   for (auto& d : diagnostics) {
     // `[rules.<id>] severity` sets every finding of the rule, whatever tier the rule chose.

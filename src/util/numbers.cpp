@@ -98,4 +98,10 @@ std::string format_number_at_most(double value, int significant) {
   return format_number(value, 17);
 }
 
+std::size_t columns(std::string_view text) {
+  std::size_t n = 0;
+  for (unsigned char c : text) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
 }  // namespace assetlint

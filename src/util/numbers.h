@@ -24,4 +24,7 @@ std::string format_number_rounded_up(double value, int significant);
 // Like format_number, but never above `value`.
 std::string format_number_at_most(double value, int significant = 6);
 
+// Width on screen: code points, not bytes ("N·m", "μ").
+std::size_t columns(std::string_view text);
+
 }  // namespace assetlint

@@ -76,6 +76,7 @@ class Reader {
     // After the actuators: which side of a coupling is driven decides which one follows.
     for (const XMLElement* el : joint_equalities) read_equality_joint(el);
     result_.asset.index_names();  // after the equalities: they make the mimics
+    result_.asset.inherited_literals = values_.inherited_literals();
     // Equalities are read after the actuators; report in document order all the same.
     std::stable_sort(result_.diagnostics.begin(), result_.diagnostics.end(), [](const auto& a, const auto& b) {
       return std::tie(a.span.file, a.span.offset) < std::tie(b.span.file, b.span.offset);

@@ -47,7 +47,30 @@ OptQuantity Values::quantity(const Attr& a, const char* name, Unit unit, std::si
   const Span span = values->size() == 1 ? value_span(a, name) : token_span(a, name, index);
   Quantity q = Quantity::from_authored((*values)[index], unit, span, scale);
   q.declaration = values->size() == 1 ? sources_.document_of(a.element).attribute_span(a.element, name) : span;
+  note_use(a, span);
   return q;
+}
+
+// A value written inside <default> is inherited by every element of that class.
+void Values::note_use(const Attr& a, const Span& span) {
+  for (const tinyxml2::XMLNode* node = a.element->Parent(); node; node = node->Parent()) {
+    const XMLElement* el = node->ToElement();
+    if (!el || std::string_view(el->Name()) != "default") continue;
+    InheritedLiteral& literal = inherited_[{span.file, span.offset}];
+    if (literal.uses++ == 0) {
+      literal.span = span;
+      const char* cls = el->Attribute("class");
+      literal.owner = fmt::format("default class '{}'", cls ? cls : "main");
+    }
+    return;
+  }
+}
+
+std::vector<InheritedLiteral> Values::inherited_literals() const {
+  std::vector<InheritedLiteral> out;
+  out.reserve(inherited_.size());
+  for (const auto& [key, literal] : inherited_) out.push_back(literal);
+  return out;
 }
 
 std::optional<bool> Values::flag(const Attr& a, const char* name) {

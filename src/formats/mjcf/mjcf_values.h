@@ -2,12 +2,14 @@
 // Reading MJCF attribute values into model quantities, with spans into whichever file
 // (model, include) and element (instance, default class) wrote them.
 #include <Eigen/Geometry>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_sources.h"
+#include "model/asset.h"
 #include "model/quantity.h"
 
 namespace assetlint::mjcf {
@@ -38,12 +40,18 @@ class Values {
   // "true" / "false" / "auto" attributes; nullopt for "auto" or absent, reported when misspelt.
   std::optional<bool> flag(const Attr& a, const char* name);
 
+  // The literals read from default classes, with how often each was used.
+  std::vector<InheritedLiteral> inherited_literals() const;
+
   Diagnostic& error(const Span& span, std::string message);
   Diagnostic& unsupported(const Span& span, std::string message);
 
  private:
+  void note_use(const Attr& a, const Span& span);
+
   const MjcfSources& sources_;
   std::vector<Diagnostic>& out_;
+  std::map<std::pair<FileId, std::size_t>, InheritedLiteral> inherited_;
 };
 
 // The rotation an element writes with quat, axisangle, euler, xyaxes or zaxis (identity when none).
