@@ -83,6 +83,10 @@ class Deriver {
     implicit_step();
     armature_steps();
     summary();
+    // USD's per-degree equivalents help whoever ports a URDF to USD; an MJCF has no use for them.
+    if (asset_.format == SourceFormat::Mjcf)
+      for (TuneStep& step : d_.steps)
+        if (step.result) step.result->usd_value.reset();
     return std::move(d_);
   }
 
