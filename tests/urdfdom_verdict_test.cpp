@@ -94,6 +94,9 @@ std::vector<std::string> mutants(const std::string& text, std::size_t max_attrib
         with(text.substr(attributes[k].second->value_offset, attributes[k].second->value_length));
         break;
       }
+    std::string renamed = text;  // tinyxml 1 rejects a name starting with ':', tinyxml2 does not
+    renamed[a->name_offset] = ':';
+    out.push_back(std::move(renamed));
     std::string removed = text;
     removed.erase(a->name_offset, a->value_offset + a->value_length + 1 - a->name_offset);
     out.push_back(std::move(removed));

@@ -85,7 +85,7 @@ std::vector<std::string> mutants(const std::string& text) {
         "<a 1b='1'/>", "<a b$='1'/>", "<?pi data?>", "<?xml version=\"1.0\"?>", "<?xml-stylesheet x?>",
         "<!DOCTYPE x>", "<![CDATA[<x>]]>", "<a b=\"&#x41;&#66;&amp;&lt;&gt;&quot;&apos;\"/>",
         "<a b=\"&unknown; &amp\"/>", "<a b=\"l1\r\nl2\rl3\n\rl4\"/>", "<a b=\"\xc3\xa9\" c='\"'/>",
-        "<a></a >", "<a></ a>", "<a/ >", "<a b=\"1\" b=\"2\"/>", "text & more", "<a>", "</a>"}) {
+        "<a></a >", "<a></ a>", "<!-->x-->", "<!-->", "<a/ >", "<a b=\"1\" b=\"2\"/>", "text & more", "<a>", "</a>"}) {
     std::string m = text;
     m.insert(inner, insert);
     out.push_back(std::move(m));
@@ -105,6 +105,7 @@ std::vector<std::string> mutants(const std::string& text) {
   out.push_back("<!-- c --><?xml version=\"1.0\"?>" + text.substr(scan.tags[0].offset));
   out.push_back("<!-- c --><?pi x?>" + text.substr(scan.tags[0].offset));
   out.push_back("<?pi x?><?xml version=\"1.0\"?>" + text.substr(scan.tags[0].offset));
+  out.push_back("<?>" + text.substr(scan.tags[0].offset));
   out.push_back(text + "<?pi x?>");
   return out;
 }
@@ -167,4 +168,17 @@ TEST_CASE("xml scanner: attribute values decode entities and line breaks as XML 
   CHECK(xml::decode_attribute_value("1\r\n2\r3\n\r4\n5") == "1\n2\n3\n4\n5");
   CHECK_FALSE(xml::attribute_value_needs_decoding("0 0 1\n"));
   CHECK(xml::attribute_value_needs_decoding("a&amp;b"));
+}
+
+TEST_CASE("xml scanner: a NUL byte anywhere in the document stops it, as it stops tinyxml2", "[urdf][xml]") {
+  using namespace std::string_literals;
+  for (const std::string& text : {"<robot><!-- a\0b --></robot>"s, "<robot name=\"a\0b\"/>"s,
+                                  "<?xml version=\"1.0\"?><!-- \0 --><robot/>"s, "<robot/><!-- \0 -->"s}) {
+    INFO(text);
+    const xml::XmlScan scan = xml::scan_xml(text);
+    REQUIRE(scan.problems.size() == 1);
+    CHECK(scan.problems.back().offset == text.find('\0'));
+    CHECK(scan.problems.back().message == "NUL byte inside the XML document");
+    CHECK_FALSE(scan.recoverable);
+  }
 }

@@ -99,6 +99,12 @@ bool plain_markup(std::string_view document) {
 // anywhere, only the processing instructions and DOCTYPE/CDATA sections need a look.
 bool plain_markup(const xml::ScannedDocument& doc) {
   const xml::XmlScan& scan = doc.scan();
+  // tinyxml 1 starts a name with a letter or '_'; tinyxml2 (and so the scanner) also with ':'.
+  for (const xml::Element& tag : scan.tags) {
+    if (tag.name.starts_with(':')) return false;
+    for (const auto& attribute : tag.attributes)
+      if (attribute.name.starts_with(':')) return false;
+  }
   if (scan.non_ascii || scan.ampersand) return plain_markup(doc.document());
   if (scan.doctype_or_cdata) return false;
   const std::string_view text = doc.file().view();

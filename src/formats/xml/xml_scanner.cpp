@@ -40,10 +40,11 @@ struct ByteSummary {
   bool non_ascii = false;
   bool ampersand = false;
   bool carriage_return = false;
+  bool nul = false;
 };
 ByteSummary summarise_bytes(std::string_view text) {
   using Bytes = unsigned char __attribute__((vector_size(16)));
-  Bytes control{}, high{}, amp{}, cr{};
+  Bytes control{}, high{}, amp{}, cr{}, nul{};
   std::size_t i = 0;
   for (; i + 16 <= text.size(); i += 16) {
     Bytes v;
@@ -51,6 +52,7 @@ ByteSummary summarise_bytes(std::string_view text) {
     high |= v;
     amp |= (Bytes)(v == '&');
     cr |= (Bytes)(v == '\r');
+    nul |= (Bytes)(v == 0);
     control |= (Bytes)((v < 0x20) & (v != 0) & (v != '\t') & (v != '\n') & (v != '\r'));
   }
   ByteSummary summary;
@@ -59,6 +61,7 @@ ByteSummary summarise_bytes(std::string_view text) {
     summary.non_ascii |= (high[k] & 0x80) != 0;
     summary.ampersand |= amp[k] != 0;
     summary.carriage_return |= cr[k] != 0;
+    summary.nul |= nul[k] != 0;
   }
   for (; i < text.size(); ++i) {
     const auto c = static_cast<unsigned char>(text[i]);
@@ -66,6 +69,7 @@ ByteSummary summarise_bytes(std::string_view text) {
     summary.non_ascii |= c >= 0x80;
     summary.ampersand |= c == '&';
     summary.carriage_return |= c == '\r';
+    summary.nul |= c == 0;
   }
   return summary;
 }
@@ -131,6 +135,13 @@ class Scanner {
     }
     scan_element_tree(pos);
     if (scan_.recoverable) scan_epilog(pos);
+    // tinyxml2 and urdfdom's tinyxml stop reading at a NUL byte, wherever it is: in a comment,
+    // an attribute value or a processing instruction it cuts the document short.
+    if (bytes.nul && scan_.recoverable) {
+      const std::string_view document = text_.substr(scan_.document_begin, scan_.document_end - scan_.document_begin);
+      if (const std::size_t nul = document.find('\0'); nul != std::string_view::npos)
+        problem(scan_.document_begin + nul, 1, "NUL byte inside the XML document", false);
+    }
   }
 
  private:
@@ -185,12 +196,12 @@ class Scanner {
           return;
         }
         scan_.instructions.push_back(pos);
-        if (!skip_to(pos, "?>", "unterminated processing instruction '<?'")) return;
+        if (!skip_to(pos, "<?", "?>", "unterminated processing instruction '<?'")) return;
         continue;
       }
       markup_seen = true;
       if (text_.compare(pos, 4, "<!--") == 0) {
-        if (!skip_to(pos, "-->", "unterminated comment '<!--'")) return;
+        if (!skip_to(pos, "<!--", "-->", "unterminated comment '<!--'")) return;
         continue;
       }
       if (text_.compare(pos, 2, "<!") == 0) {
@@ -202,8 +213,10 @@ class Scanner {
     }
   }
 
-  bool skip_to(std::size_t& pos, std::string_view terminator, std::string_view message) {
-    const std::size_t end = text_.find(terminator, pos);
+  // Past `opener` at pos, to the end of the first `terminator` after it ("<!-->" and "<?>"
+  // are not closed).
+  bool skip_to(std::size_t& pos, std::string_view opener, std::string_view terminator, std::string_view message) {
+    const std::size_t end = text_.find(terminator, pos + opener.size());
     if (end == std::string_view::npos) {
       problem(pos, 2, std::string(message), false);
       pos = text_.size();
@@ -249,12 +262,12 @@ class Scanner {
       // Most markup is a start tag: the other kinds only when the byte after '<' says so.
       const char kind = pos + 1 < text_.size() ? text_[pos + 1] : '\0';
       if (kind == '!' && text_.compare(pos, 4, "<!--") == 0) {
-        if (!skip_to(pos, "-->", "unterminated comment '<!--'")) return;
+        if (!skip_to(pos, "<!--", "-->", "unterminated comment '<!--'")) return;
         continue;
       }
       if (kind == '!' && text_.compare(pos, 9, "<![CDATA[") == 0) {
         scan_.doctype_or_cdata = true;
-        if (!skip_to(pos, "]]>", "unterminated CDATA section")) return;
+        if (!skip_to(pos, "<![CDATA[", "]]>", "unterminated CDATA section")) return;
         continue;
       }
       if (kind == '?') {
@@ -398,7 +411,7 @@ class Scanner {
     while (pos < text_.size()) {
       if (is_space(text_[pos])) { ++pos; continue; }
       if (text_.compare(pos, 4, "<!--") == 0) {
-        if (!skip_to(pos, "-->", "unterminated comment '<!--'")) return;
+        if (!skip_to(pos, "<!--", "-->", "unterminated comment '<!--'")) return;
         scan_.document_end = pos;
         continue;
       }
