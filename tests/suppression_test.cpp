@@ -164,6 +164,14 @@ TEST_CASE("suppress: globs, ignore-file, --select and unknown rule ids", "[suppr
   CHECK(unknown->fix->edits.at(0).replacement == "limits-inverted");
   CHECK(find(typo, "limits-inverted") == nullptr);
 
+  // In a file with a parse error the same finding offers no edit: comments may not end where they seem to.
+  const auto broken = lint_text("g.urdf", text + "\x01", only_limits);
+  const Diagnostic* unfixable = find(broken, "unused-suppression");
+  REQUIRE(unfixable);
+  CHECK_FALSE(unfixable->fix);
+  REQUIRE(unfixable->notes.size() == 1);
+  CHECK(unfixable->notes[0].message == "No fix is offered while the file has a parse error: fix that first.");
+
   // unused-suppression can itself be ignored for the file.
   text = insert_before(gripper(), "<robot",
                        "<!-- asset-lint: ignore-file[unused-suppression] -->\n"

@@ -20,6 +20,7 @@
 #include "physics/articulation.h"
 #include "pipeline/inherited_fixes.h"
 #include "pipeline/suppressions.h"
+#include "rules/reader_rules.h"
 #include "rules/registry.h"
 
 namespace assetlint {
@@ -77,8 +78,11 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   auto file = std::make_shared<const SourceFile>(path, std::move(text));
   ReadResult result = read(path, kind, std::move(file), files, settings);
   std::vector<Diagnostic> diagnostics;
-  for (auto& d : result.diagnostics)
+  std::set<FileId> unparsable;
+  for (auto& d : result.diagnostics) {
+    if (d.rule == rules::kParseError.id) unparsable.insert(d.span.file == kNoFile ? 0 : d.span.file);
     if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
+  }
   if (result.usable) {
     config::apply_drive_settings(result.asset, settings);
     const physics::SharedArticulationScope shared_articulation(result.asset);
@@ -93,7 +97,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     // `[rules.<id>] severity` sets every finding of the rule, whatever tier the rule chose.
     d.severity = settings.severity_for(d.rule, d.severity);
   }
-  apply_suppressions(result.asset.sources, diagnostics, settings);
+  apply_suppressions(result.asset.sources, diagnostics, settings, unparsable);
   sort_diagnostics(diagnostics);
   report.diagnostics = std::move(diagnostics);
   report.sources = std::move(result.asset.sources);

@@ -70,7 +70,8 @@ bool per_file_ignored(const Settings& settings, std::string_view path, std::stri
 }
 
 void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& sources,
-                        std::vector<Diagnostic>& diagnostics, const Settings& settings) {
+                        std::vector<Diagnostic>& diagnostics, const Settings& settings,
+                        const std::set<FileId>& unparsable) {
   struct Found {
     FileId file;
     SuppressionComment comment;
@@ -152,6 +153,11 @@ void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& so
                              quote_list(idle), where);
     }
     Diagnostic d{std::string(unused_id), severity, span, std::move(message), std::nullopt, {}};
+    if (unparsable.count(f.file)) {
+      d.note("No fix is offered while the file has a parse error: fix that first.");
+      unused.push_back(std::move(d));
+      continue;
+    }
     const Applicability applicability = unknown.empty() ? Applicability::Safe : Applicability::Unsafe;
     if (kept.empty()) {
       d.fix = Fix{"remove the suppression comment", applicability,

@@ -4,6 +4,7 @@
 // suppresses nothing in the run (for rules that ran), names no known rule, or is
 // malformed is reported as `unused-suppression`.
 #include <memory>
+#include <set>
 #include <string_view>
 #include <vector>
 
@@ -19,8 +20,11 @@ namespace assetlint {
 bool per_file_ignored(const Settings& settings, std::string_view path, std::string_view rule_id);
 
 // Drops the suppressed findings of `diagnostics` (located in `sources`), then adds the
-// unused-suppression findings when that rule is enabled.
+// unused-suppression findings when that rule is enabled. In the files of `unparsable`
+// (those with a parse error, selected or not) those findings offer no edit: a comment
+// need not end where it seems to (an unclosed one swallows what follows).
 void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& sources,
-                        std::vector<Diagnostic>& diagnostics, const Settings& settings);
+                        std::vector<Diagnostic>& diagnostics, const Settings& settings,
+                        const std::set<FileId>& unparsable = {});
 
 }  // namespace assetlint
