@@ -153,8 +153,6 @@ class DriveNaturalFrequency final : public Rule {
     const DrivenJoint* driven;
     physics::Servo servo;
     std::string inertia_label;  // "the guide's I", "the articulation's I"
-    double damping_ratio;
-    double slow_rate;  // rad/s
 
     physics::StepMap map(physics::MujocoIntegrator integrator) const {
       return physics::servo_step(integrator, driven->rate.h(), servo);
@@ -186,6 +184,7 @@ class DriveNaturalFrequency final : public Rule {
           physics::integrator_name(rate.integrator), rate.integrator_origin, damping_text(rate.integrator),
           format_number(step.spectral_radius(), 3), inertia_label, format_number(servo.inertia, 3),
           driven->inertia_unit(), step.stable() ? "decays instead of growing" : "grows every step"));
+      const double damping_ratio = servo.damping_ratio(), slow_rate = physics::slowest_decay_rate(servo);
       if (step.stable())
         out.push_back(fmt::format("Damping ratio ζ = {} on {}: {}; the slowest mode decays at {} rad/s, h × that rate = {}.",
                                   format_number(damping_ratio, 3), inertia_label,
@@ -210,10 +209,7 @@ class DriveNaturalFrequency final : public Rule {
   static std::optional<MujocoStep> mujoco_step(const DrivenJoint& driven, double inertia, std::string inertia_label) {
     if (driven.rate.solver != physics::Solver::MuJoCo || driven.acceleration() || !(inertia > 0)) return std::nullopt;
     const physics::Servo servo = mujoco_servo(driven, inertia);
-    const double total = servo.joint_damping + servo.actuator_damping;
-    return MujocoStep{&driven, servo, std::move(inertia_label),
-                      physics::damping_ratio(total, servo.stiffness, servo.inertia),
-                      physics::slowest_decay_rate(servo)};
+    return MujocoStep{&driven, servo, std::move(inertia_label)};
   }
 
   // Judged on the guide's I and, when known, on the articulation's own: the verdict is the

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "physics/drive.h"
+
 namespace assetlint::physics {
 
 std::string_view integrator_name(MujocoIntegrator integrator) {
@@ -32,6 +34,8 @@ Servo mujoco_servo(const Joint& joint, double stiffness, double damping, double 
   return servo;
 }
 
+double Servo::damping_ratio() const { return physics::damping_ratio(damping(), stiffness, inertia); }
+
 double StepMap::spectral_radius() const {
   const double trace = qq + vv;
   const double determinant = qq * vv - qv * vq;
@@ -45,14 +49,14 @@ double implicit_damping(MujocoIntegrator integrator, const Servo& servo) {
   switch (integrator) {
     case MujocoIntegrator::Euler: return servo.joint_damping;
     case MujocoIntegrator::Implicit:
-    case MujocoIntegrator::ImplicitFast: return servo.joint_damping + servo.actuator_damping;
+    case MujocoIntegrator::ImplicitFast: return servo.damping();
     case MujocoIntegrator::RK4: return 0;
   }
   return 0;
 }
 
 double explicit_damping(MujocoIntegrator integrator, const Servo& servo) {
-  return servo.joint_damping + servo.actuator_damping - implicit_damping(integrator, servo);
+  return servo.damping() - implicit_damping(integrator, servo);
 }
 
 namespace {
@@ -66,8 +70,7 @@ Matrix multiply(const Matrix& a, const Matrix& b) {
 
 // RK4 on a linear system is its Taylor polynomial: Σ (hA)ⁿ/n! for n ≤ 4.
 StepMap runge_kutta_step(double h, const Servo& servo) {
-  const double c = servo.joint_damping + servo.actuator_damping;
-  const Matrix ha{0, h, -h * servo.stiffness / servo.inertia, -h * c / servo.inertia};
+  const Matrix ha{0, h, -h * servo.stiffness / servo.inertia, -h * servo.damping() / servo.inertia};
   Matrix sum{1, 0, 0, 1}, power{1, 0, 0, 1};
   for (int n = 1; n <= 4; ++n) {
     power = multiply(power, ha);
@@ -91,16 +94,14 @@ StepMap servo_step(MujocoIntegrator integrator, double h, const Servo& servo) {
 }
 
 double slowest_decay_rate(const Servo& servo) {
-  const double omega = std::sqrt(servo.stiffness / servo.inertia);
-  const double zeta = (servo.joint_damping + servo.actuator_damping) / (2 * std::sqrt(servo.stiffness * servo.inertia));
+  const double omega = natural_frequency(servo.stiffness, servo.inertia);
+  const double zeta = servo.damping_ratio();
   if (zeta < 1) return zeta * omega;
   return omega / (zeta + std::sqrt(zeta * zeta - 1));  // = ω·(ζ − sqrt(ζ² − 1)) without the cancellation
 }
 
 bool damps_stably(MujocoIntegrator integrator, double h, const Servo& servo) {
-  const double damping = servo.joint_damping + servo.actuator_damping;
-  const double ratio = damping / (2 * std::sqrt(servo.stiffness * servo.inertia));
-  return servo_step(integrator, h, servo).stable() && ratio >= 1 && h * slowest_decay_rate(servo) <= 1;
+  return servo_step(integrator, h, servo).stable() && servo.damping_ratio() >= 1 && h * slowest_decay_rate(servo) <= 1;
 }
 
 }  // namespace assetlint::physics

@@ -23,6 +23,9 @@ struct Servo {
   double stiffness = 0;         // k: the actuator's kp
   double joint_damping = 0;     // the joint's `damping`
   double actuator_damping = 0;  // the actuator's kv
+
+  double damping() const { return joint_damping + actuator_damping; }  // c, both together
+  double damping_ratio() const;                                        // ζ = c / (2·sqrt(k·I))
 };
 
 // A MuJoCo joint's servo on `inertia`: the MJCF reader folds the joint's own damping into
