@@ -1,7 +1,7 @@
 // Differential test of the urdfdom skip (src/formats/urdf/urdfdom_verdict.h): asset-lint
-// reports urdf-invalid (or a parse error) exactly when urdfdom rejects the document, over
-// every fixture, every corpus URDF and mutated variants of each, and urdfdom is really
-// skipped on most of the corpus.
+// reports urdf-invalid (or a parse error) exactly when urdfdom rejects the document, a
+// predicted verdict is urdfdom's own message for message, over every fixture, every corpus
+// URDF and mutated variants of each, and urdfdom is really skipped on most of the corpus.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,6 +10,8 @@
 
 #include "formats/urdf/urdf_reader.h"
 #include "formats/urdf/urdfdom_check.h"
+#include "formats/urdf/urdfdom_verdict.h"
+#include "formats/xml/scanned_document.h"
 #include "formats/xml/xml_scanner.h"
 #include "pipeline/urdf_verdict.h"
 #include "test_support.h"
@@ -33,6 +35,7 @@ struct Verdicts {
   bool urdf_invalid = false;
   bool urdfdom_rejects = false;
   bool urdfdom_ran = false;
+  bool rejection_predicted = false;
 };
 
 Verdicts compare(const std::string& name, const std::string& text) {
@@ -44,7 +47,12 @@ Verdicts compare(const std::string& name, const std::string& text) {
     if (d.rule == "urdf-invalid") v.urdf_invalid = true;
   }
   v.asset_lint_rejects = rejects_as_urdfdom_would(r);
-  v.urdfdom_rejects = !urdf::urdfdom_errors(text).empty();
+  const std::vector<std::string> urdfdom = urdf::urdfdom_errors(text);
+  v.urdfdom_rejects = !urdfdom.empty();
+  const SourceFile file(name, text);
+  const auto predicted = urdf::predicted_urdfdom_errors(xml::ScannedDocument(file, 0));
+  if (predicted) CHECK(*predicted == urdfdom);  // what the reader reports instead of running urdfdom
+  v.rejection_predicted = predicted && !predicted->empty();
   return v;
 }
 
@@ -110,20 +118,21 @@ std::vector<std::string> mutants(const std::string& text, std::size_t max_attrib
 }
 
 struct Tally {
-  std::size_t documents = 0, skipped = 0, urdfdom_accepts = 0;
+  std::size_t documents = 0, skipped = 0, urdfdom_accepts = 0, rejections_predicted = 0;
 };
 
 void check_all(const std::vector<fs::path>& files, std::size_t max_attributes, Tally& originals, Tally& variants) {
   for (const auto& file : files) {
     const std::string text = test::read_file(file);
     auto check = [&](const std::string& doc, Tally& tally, const std::string& what) {
-      const Verdicts v = compare(file.filename().string(), doc);
       INFO(file.string() << " " << what << "\n" << doc.substr(0, 2000));
+      const Verdicts v = compare(file.filename().string(), doc);
       // Never accept what urdfdom rejects; never call urdf-invalid what urdfdom accepts.
       if (v.urdfdom_rejects) CHECK(v.asset_lint_rejects);
       else CHECK_FALSE(v.urdf_invalid);
       ++tally.documents;
       if (!v.urdfdom_ran) ++tally.skipped;
+      if (v.rejection_predicted) ++tally.rejections_predicted;
       if (!v.urdfdom_rejects) ++tally.urdfdom_accepts;
     };
     check(text, originals, "as written");
@@ -146,6 +155,7 @@ TEST_CASE("urdfdom verdict: skipped only where urdfdom accepts, over every fixtu
   CHECK(originals.skipped * 10 >= originals.urdfdom_accepts * 8);
   CHECK(variants.skipped > 0);
   CHECK(variants.urdfdom_accepts < variants.documents);
+  CHECK(variants.rejections_predicted > 0);  // mutants without a <limit> are refused without urdfdom
 }
 
 TEST_CASE("urdfdom verdict: skipped only where urdfdom accepts, over the corpus and its mutants", "[urdfdom][corpus]") {
@@ -161,4 +171,6 @@ TEST_CASE("urdfdom verdict: skipped only where urdfdom accepts, over the corpus 
                          << " mutants skipped urdfdom");
   CHECK(originals.skipped * 10 >= originals.urdfdom_accepts * 8);
   CHECK(variants.skipped > 0);
+  // The corpus's own refusals for a missing <limit> (Drake's PR2, the Factory Franka).
+  CHECK(originals.rejections_predicted >= 2);
 }

@@ -51,8 +51,8 @@ class UrdfReader {
       else if (el->name == "joint") read_joint(el);
     }
     result_.asset.index_names();
-    if (urdfdom_certainly_accepts(doc_)) return std::move(result_);
-    check_with_urdfdom(doc_.document());
+    std::optional<std::vector<std::string>> urdfdom_messages = predicted_urdfdom_errors(doc_);
+    report_urdfdom(urdfdom_messages ? std::move(*urdfdom_messages) : urdfdom_errors(doc_.document()));
     return std::move(result_);
   }
 
@@ -266,11 +266,10 @@ class UrdfReader {
     joint.motor = Motor{*rotor, gear, fmt::format("<drake:rotor_inertia> and <drake:gear_ratio> at line {}", rotor->span.line)};
   }
 
-  // Runs urdfdom and reports its complaints as one finding: the first is the cause, the rest
-  // (urdfdom's cascade, e.g. "Could not parse collision element" after an unknown geometry)
-  // become located notes.
-  void check_with_urdfdom(std::string_view document) {
-    std::vector<std::string> messages = urdfdom_errors(document);
+  // Reports urdfdom's complaints (empty: it accepts the file) as one finding: the first is
+  // the cause, the rest (urdfdom's cascade, e.g. "Could not parse collision element" after
+  // an unknown geometry) become located notes.
+  void report_urdfdom(std::vector<std::string> messages) {
     // urdfdom's generic epilogue says nothing the specific messages before it do not.
     if (messages.size() > 1) std::erase(messages, std::string("joint xml is not initialized correctly"));
     // An undefined link is structure-undefined-link's finding, which says that urdfdom rejects it.

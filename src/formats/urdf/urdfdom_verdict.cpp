@@ -4,8 +4,10 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <unordered_set>
+#include <vector>
 
 namespace assetlint::urdf {
 namespace {
@@ -166,42 +168,76 @@ bool plain_vector(std::string_view text) {
   return count == 3;
 }
 
+// A vector urdfdom reads without complaint, when present.
+bool plain_vector_or_absent(const std::optional<std::string_view>& text) { return !text || plain_vector(*text); }
+
+// urdfdom's Color::init: every piece a number in [0, 1] (a wrong count is not an error).
+bool plain_color(std::string_view text) {
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t end = std::min(text.find(' ', pos), text.size());
+    const std::string_view piece = text.substr(pos, end - pos);
+    if (!piece.empty()) {
+      if (!plain_number(piece)) return false;
+      double value = 0;
+      const std::size_t skip = piece[0] == '+' ? 1 : 0;
+      std::from_chars(piece.data() + skip, piece.data() + piece.size(), value);
+      if (value < 0 || value > 1) return false;
+    }
+    pos = end + 1;
+  }
+  return true;
+}
+
 class Verdict {
  public:
   explicit Verdict(const xml::ScannedDocument& doc) : doc_(doc) {}
 
-  bool accepts(const Element* robot) {
-    if (!robot || robot->name != "robot") return false;
-    if (!value(robot, "name")) return false;
-    if (auto version = value(robot, "version"); version && *version != "1.0") return false;
+  std::optional<std::vector<std::string>> predict(const Element* robot) {
+    if (!robot || robot->name != "robot") return std::nullopt;
+    if (!value(robot, "name")) return std::nullopt;
+    if (auto version = value(robot, "version"); version && *version != "1.0") return std::nullopt;
 
     std::size_t elements = 0;  // sizes the name sets once: rehashing 100 000 names costs more than the lookups
     for (const Element* e = doc_.first_child(robot); e; e = doc_.next_sibling(e)) ++elements;
 
     std::unordered_set<std::string_view> materials;
     for (const Element* m = doc_.first_child(robot, "material"); m; m = doc_.next_sibling(m, "material"))
-      if (!materials.insert(value(m, "name").value_or("")).second) return false;
+      if (!materials.insert(value(m, "name").value_or("")).second) return std::nullopt;
 
     std::unordered_set<std::string_view> links(elements);
     for (const Element* l = doc_.first_child(robot, "link"); l; l = doc_.next_sibling(l, "link"))
-      if (!links.insert(value(l, "name").value_or("")).second) return false;
-    if (links.empty()) return false;
+      if (!links.insert(value(l, "name").value_or("")).second) return std::nullopt;
+    if (links.empty()) return std::nullopt;
 
+    // urdfdom parses every joint before it builds the tree, so a joint it cannot parse is
+    // the refusal even when an earlier joint names an undefined link.
+    bool tree_links_defined = true;
     std::unordered_set<std::string_view> joints(elements), children(elements);
     for (const Element* j = doc_.first_child(robot, "joint"); j; j = doc_.next_sibling(j, "joint")) {
       auto name = value(j, "name");
-      if (!name || !joints.insert(*name).second || !joint_parses(j)) return false;
+      if (!name) return std::nullopt;
+      switch (parse_joint(j)) {
+        case JointParse::Other: return std::nullopt;
+        case JointParse::MissingLimit: return missing_limit(robot, j, *name);
+        case JointParse::Parses: break;
+      }
+      if (!joints.insert(*name).second) return std::nullopt;
       const auto parent = link_of(j, "parent"), child = link_of(j, "child");
-      if (parent.empty() || child.empty() || !links.count(parent) || !links.count(child)) return false;
+      if (parent.empty() || child.empty() || !links.count(parent) || !links.count(child)) tree_links_defined = false;
       children.insert(child);
     }
+    if (!tree_links_defined) return std::nullopt;
     // initRoot: exactly one link that is no joint's child.
     std::size_t roots = 0;
     for (std::string_view link : links) roots += children.count(link) ? 0 : 1;
-    return roots == 1 && clean_;
+    if (roots != 1 || !clean_) return std::nullopt;
+    return std::vector<std::string>{};
   }
 
  private:
+  enum class JointParse { Parses, MissingLimit, Other };
+
   std::optional<std::string_view> value(const Element* el, std::string_view attr) {
     auto v = doc_.raw_value(el, attr);
     if (v && has_control(*v)) clean_ = false;
@@ -215,46 +251,110 @@ class Verdict {
     auto v = value(el, attr);
     return v && plain_number(*v);
   }
-  bool vector_if_present(const Element* el, std::string_view attr) {
-    auto v = value(el, attr);
-    return !v || plain_vector(*v);
-  }
+  bool vector_if_present(const Element* el, std::string_view attr) { return plain_vector_or_absent(value(el, attr)); }
   std::string_view link_of(const Element* joint, const char* tag) {
     const Element* el = doc_.first_child(joint, tag);
     return el ? value(el, "link").value_or("") : std::string_view();
   }
 
-  // urdfdom's parseJoint returns true.
-  bool joint_parses(const Element* j) {
+  // The joint urdfdom's parseJoint rejects for a missing <limit> (its first complaint, so
+  // its message is known) when nothing urdfdom reads before it logs an error.
+  std::optional<std::vector<std::string>> missing_limit(const Element* robot, const Element* joint,
+                                                        std::string_view name) {
+    for (const Element* m = doc_.first_child(robot, "material"); m; m = doc_.next_sibling(m, "material"))
+      if (!material_quiet(m, false)) return std::nullopt;
+    for (const Element* l = doc_.first_child(robot, "link"); l; l = doc_.next_sibling(l, "link"))
+      if (!link_quiet(l)) return std::nullopt;
+    if (!clean_) return std::nullopt;
+    const bool revolute = value(joint, "type") == "revolute";
+    std::string message = revolute ? "Joint [" + std::string(name) + "] is of type REVOLUTE but it does not specify limits"
+                                   : "Joint [" + std::string(name) + "] is of type PRISMATIC without limits";
+    return std::vector<std::string>{std::move(message), "joint xml is not initialized correctly"};
+  }
+
+  // urdfdom's parseMaterial logs nothing. A material inside a visual may hold only a name.
+  bool material_quiet(const Element* material, bool only_name_is_ok) {
+    if (!value(material, "name")) return false;
+    bool has_rgb = false, has_filename = false;
+    if (const Element* texture = doc_.first_child(material, "texture")) has_filename = value(texture, "filename").has_value();
+    if (const Element* color = doc_.first_child(material, "color"))
+      if (auto rgba = value(color, "rgba")) {
+        if (!plain_color(*rgba)) return false;
+        has_rgb = true;
+      }
+    return only_name_is_ok || has_rgb || has_filename;
+  }
+  bool pose_quiet(const Element* parent) {
+    const Element* origin = doc_.first_child(parent, "origin");
+    return !origin || (vector_if_present(origin, "xyz") && vector_if_present(origin, "rpy"));
+  }
+  bool geometry_quiet(const Element* holder) {
+    const Element* geometry = doc_.first_child(holder, "geometry");
+    const Element* shape = geometry ? doc_.first_child(geometry) : nullptr;
+    if (!shape) return false;
+    if (shape->name == "sphere") return number(shape, "radius");
+    if (shape->name == "box") {
+      const auto size = value(shape, "size");
+      return size && plain_vector(*size);
+    }
+    if (shape->name == "cylinder") return number(shape, "length") && number(shape, "radius");
+    if (shape->name == "mesh") return value(shape, "filename") && vector_if_present(shape, "scale");
+    return false;
+  }
+  // urdfdom's parseLink logs nothing (its failures are logged, then ignored by parseURDF).
+  bool link_quiet(const Element* link) {
+    if (!value(link, "name")) return false;
+    if (const Element* inertial = doc_.first_child(link, "inertial")) {
+      if (!pose_quiet(inertial)) return false;
+      const Element* mass = doc_.first_child(inertial, "mass");
+      const Element* inertia = doc_.first_child(inertial, "inertia");
+      if (!mass || !number(mass, "value") || !inertia) return false;
+      for (const char* moment : {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"})
+        if (!number(inertia, moment)) return false;
+    }
+    for (const Element* visual = doc_.first_child(link, "visual"); visual; visual = doc_.next_sibling(visual, "visual")) {
+      if (!pose_quiet(visual) || !geometry_quiet(visual)) return false;
+      if (const Element* material = doc_.first_child(visual, "material"))
+        if (!material_quiet(material, true)) return false;
+    }
+    for (const Element* collision = doc_.first_child(link, "collision"); collision;
+         collision = doc_.next_sibling(collision, "collision"))
+      if (!pose_quiet(collision) || !geometry_quiet(collision)) return false;
+    return true;
+  }
+
+  // urdfdom's parseJoint: returns true, or fails first on a missing <limit>, or otherwise.
+  JointParse parse_joint(const Element* j) {
     if (const Element* origin = doc_.first_child(j, "origin"))
-      if (!vector_if_present(origin, "xyz") || !vector_if_present(origin, "rpy")) return false;
+      if (!vector_if_present(origin, "xyz") || !vector_if_present(origin, "rpy")) return JointParse::Other;
     auto type = value(j, "type");
-    if (!type) return false;
+    if (!type) return JointParse::Other;
     const bool moving = *type == "revolute" || *type == "continuous" || *type == "prismatic" || *type == "planar";
-    if (!moving && *type != "fixed" && *type != "floating") return false;
+    if (!moving && *type != "fixed" && *type != "floating") return JointParse::Other;
     if (const Element* axis = doc_.first_child(j, "axis"); axis && moving)
-      if (!vector_if_present(axis, "xyz")) return false;
+      if (!vector_if_present(axis, "xyz")) return JointParse::Other;
     if (const Element* limit = doc_.first_child(j, "limit")) {
       if (!number_if_present(limit, "lower") || !number_if_present(limit, "upper") || !number(limit, "effort") ||
           !number(limit, "velocity"))
-        return false;
+        return JointParse::Other;
     } else if (*type == "revolute" || *type == "prismatic") {
-      return false;
+      return JointParse::MissingLimit;
     }
     if (const Element* safety = doc_.first_child(j, "safety_controller"))
       if (!number_if_present(safety, "soft_lower_limit") || !number_if_present(safety, "soft_upper_limit") ||
           !number_if_present(safety, "k_position") || !number(safety, "k_velocity"))
-        return false;
+        return JointParse::Other;
     if (const Element* calibration = doc_.first_child(j, "calibration"))
-      if (!number_if_present(calibration, "rising") || !number_if_present(calibration, "falling")) return false;
+      if (!number_if_present(calibration, "rising") || !number_if_present(calibration, "falling"))
+        return JointParse::Other;
     if (const Element* mimic = doc_.first_child(j, "mimic"))
       if (!value(mimic, "joint") || !number_if_present(mimic, "multiplier") || !number_if_present(mimic, "offset"))
-        return false;
+        return JointParse::Other;
     if (const Element* dynamics = doc_.first_child(j, "dynamics")) {
-      if (!number_if_present(dynamics, "damping") || !number_if_present(dynamics, "friction")) return false;
-      if (!value(dynamics, "damping") && !value(dynamics, "friction")) return false;
+      if (!number_if_present(dynamics, "damping") || !number_if_present(dynamics, "friction")) return JointParse::Other;
+      if (!value(dynamics, "damping") && !value(dynamics, "friction")) return JointParse::Other;
     }
-    return true;
+    return JointParse::Parses;
   }
 
   const xml::ScannedDocument& doc_;
@@ -263,9 +363,9 @@ class Verdict {
 
 }  // namespace
 
-bool urdfdom_certainly_accepts(const xml::ScannedDocument& doc) {
-  if (!doc.errors().empty() || !plain_markup(doc)) return false;
-  return Verdict(doc).accepts(doc.root());
+std::optional<std::vector<std::string>> predicted_urdfdom_errors(const xml::ScannedDocument& doc) {
+  if (!doc.errors().empty() || !plain_markup(doc)) return std::nullopt;
+  return Verdict(doc).predict(doc.root());
 }
 
 }  // namespace assetlint::urdf
