@@ -1,5 +1,7 @@
 #include "model/asset.h"
 
+#include <functional>
+
 namespace assetlint {
 
 const Link* Asset::find_link(std::string_view name) const {
@@ -53,6 +55,28 @@ const Joint* Asset::followed_joint(const Joint& mimic) const {
   return reference;
 }
 
+std::optional<std::size_t> Asset::index_of(const Link& link) const {
+  const std::less<const Link*> before;
+  if (links.empty() || before(&link, links.data()) || !before(&link, links.data() + links.size())) return std::nullopt;
+  return static_cast<std::size_t>(&link - links.data());
+}
+
+std::optional<std::size_t> Asset::index_of(const Joint& joint) const {
+  const std::less<const Joint*> before;
+  if (joints.empty() || before(&joint, joints.data()) || !before(&joint, joints.data() + joints.size()))
+    return std::nullopt;
+  return static_cast<std::size_t>(&joint - joints.data());
+}
+
+const Link* Asset::side_link(const Joint& joint, int side) const {
+  if (indexed())
+    if (const auto i = index_of(joint)) {
+      const std::size_t link = index_->joint_links[*i][side == 0 ? 0 : 1];
+      return link == NameIndex::kNoLink ? nullptr : &links[link];
+    }
+  return find_link(side == 0 ? joint.parent.text : joint.child.text);
+}
+
 void Asset::index_names() {
   auto index = std::make_shared<NameIndex>();
   index->link_count = links.size();
@@ -66,6 +90,12 @@ void Asset::index_names() {
     index->link_joints[joints[i].parent.text].push_back(i);
     if (joints[i].child.text != joints[i].parent.text) index->link_joints[joints[i].child.text].push_back(i);
   }
+  const auto link_named = [&](std::string_view name) {
+    auto it = index->links.find(name);
+    return it == index->links.end() ? NameIndex::kNoLink : it->second;
+  };
+  index->joint_links.reserve(joints.size());
+  for (const Joint& joint : joints) index->joint_links.push_back({link_named(joint.parent.text), link_named(joint.child.text)});
   index_ = std::move(index);
 }
 

@@ -13,6 +13,7 @@
 
 #include "model/quantity.h"
 #include "model/source.h"
+#include "util/boxed.h"
 
 namespace assetlint {
 
@@ -133,14 +134,16 @@ struct Joint {
   OptQuantity joint_friction;
   OptQuantity joint_stiffness;  // MJCF passive spring toward springref: N·m/rad or N/m
   OptQuantity armature;    // kg·m² or kg
-  std::optional<Motor> motor;
+  // The parts most joints lack are boxed: a joint record stays small (issue 10: 100 000
+  // joints of 3.8 kB each were 381 MB faulted in and zeroed, and missed the cache).
+  Boxed<Motor> motor;
   Actuation actuation = Actuation::Unknown;
-  std::optional<Transmission> transmission;
-  std::optional<Drive> drive;
+  Boxed<Transmission> transmission;
+  Boxed<Drive> drive;
   // Values of a drive schema that is authored but not applied (USD `delete apiSchemas`):
   // PhysX ignores them, but they show what someone meant, e.g. gains copied elsewhere.
-  std::optional<Drive> inactive_drive;
-  std::optional<Mimic> mimic;
+  Boxed<Drive> inactive_drive;
+  Boxed<Mimic> mimic;
 
   bool is_mimic() const { return mimic.has_value(); }
 };
@@ -192,6 +195,13 @@ struct Asset {
   // not itself, not a mimic, both single-DOF); nullptr otherwise, and for non-mimics.
   // Rules derive values and fixes only through an accepted pair.
   const Joint* followed_joint(const Joint& mimic) const;
+  // The position of a link or joint of this asset in `links` / `joints`; nullopt for one
+  // that is not an element of them.
+  std::optional<std::size_t> index_of(const Link& link) const;
+  std::optional<std::size_t> index_of(const Joint& joint) const;
+  // The link a joint names as parent (side 0) or child (side 1); nullptr when none is
+  // defined. Resolved once per joint by index_names(), a lookup by name otherwise.
+  const Link* side_link(const Joint& joint, int side) const;
   // Builds the name index; call again after adding, removing or renaming links or joints.
   void index_names();
   const SourceFile& source(FileId id) const { return *sources.at(id); }
@@ -202,6 +212,10 @@ struct Asset {
     std::unordered_map<std::string, std::size_t, TransparentHash, std::equal_to<>> links, joints;
     std::unordered_map<std::string, std::vector<std::size_t>, TransparentHash, std::equal_to<>> followers;
     std::unordered_map<std::string, std::vector<std::size_t>, TransparentHash, std::equal_to<>> link_joints;
+    // Per joint: the positions of its parent and child link, kNoLink when undefined
+    // (positions, not pointers: a copied Asset shares the index).
+    static constexpr std::size_t kNoLink = static_cast<std::size_t>(-1);
+    std::vector<std::array<std::size_t, 2>> joint_links;
   };
   bool indexed() const { return index_ && index_->link_count == links.size() && index_->joint_count == joints.size(); }
   std::shared_ptr<const NameIndex> index_;

@@ -74,23 +74,27 @@ Articulation::Articulation(const Asset& asset, FreeRoot free_root) {
   solve();
 }
 
+int Articulation::body_index(const Link* link) const {
+  const auto i = link ? asset_->index_of(*link) : std::nullopt;
+  return i && *i < body_of_link_.size() ? body_of_link_[*i] : -1;
+}
+
 const Body* Articulation::body_of(std::string_view link) const {
-  auto it = body_index_.find(link);
-  return it == body_index_.end() ? nullptr : &bodies_[static_cast<std::size_t>(it->second)];
+  const int b = body_index(asset_->find_link(link));
+  return b < 0 ? nullptr : &bodies_[static_cast<std::size_t>(b)];
 }
 
 const Body* Articulation::side(const Joint& joint, int which) const {
-  return body_of(which == 0 ? joint.parent.text : joint.child.text);
+  const int b = body_index(asset_->side_link(joint, which));
+  return b < 0 ? nullptr : &bodies_[static_cast<std::size_t>(b)];
 }
 
 void Articulation::build(const Asset& asset, FreeRoot free_root) {
+  asset_ = &asset;
   const std::size_t n = asset.links.size();
-  std::unordered_map<std::string_view, int> link_index;
-  for (std::size_t i = 0; i < n; ++i) link_index.emplace(asset.links[i].name.text, static_cast<int>(i));
-  const auto index_of = [&](const Name& name) {
-    auto it = link_index.find(name.text);
-    return it == link_index.end() ? -1 : it->second;
-  };
+  // A link's position; the first definition of a repeated name stands for it.
+  const auto link_index = [&](const Link* link) { return link ? static_cast<int>(*asset.index_of(*link)) : -1; };
+  const auto side_index = [&](const Joint& joint, int which) { return link_index(asset.side_link(joint, which)); };
 
   // Rigid bodies: links welded by fixed joints. A fixed joint to nothing (the world, a
   // static prim) or to a link named "world" welds its component to the world.
@@ -104,7 +108,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
     if (world_link(static_cast<int>(i))) to_world[i] = true;
   for (const Joint& joint : asset.joints) {
     if (joint.type != JointType::Fixed) continue;
-    const int a = index_of(joint.parent), b = index_of(joint.child);
+    const int a = side_index(joint, 0), b = side_index(joint, 1);
     if (a >= 0 && b >= 0) welded.unite(a, b);
     else if (a >= 0 && joint.child.text.empty()) to_world[static_cast<std::size_t>(a)] = true;
     else if (b >= 0 && joint.parent.text.empty()) to_world[static_cast<std::size_t>(b)] = true;
@@ -115,7 +119,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
   std::unordered_multimap<int, const Joint*> fixed_at;
   for (const Joint& joint : asset.joints) {
     if (joint.type != JointType::Fixed) continue;
-    const int a = index_of(joint.parent), b = index_of(joint.child);
+    const int a = side_index(joint, 0), b = side_index(joint, 1);
     if (a < 0 || b < 0) continue;
     fixed_at.emplace(a, &joint);
     fixed_at.emplace(b, &joint);
@@ -138,8 +142,8 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
       auto [first, last] = fixed_at.equal_range(at);
       for (auto it = first; it != last; ++it) {
         const Joint& joint = *it->second;
-        const bool forward = index_of(joint.parent) == at;
-        const int next = forward ? index_of(joint.child) : index_of(joint.parent);
+        const bool forward = side_index(joint, 0) == at;
+        const int next = forward ? side_index(joint, 1) : side_index(joint, 0);
         if (body_of_link[static_cast<std::size_t>(next)] >= 0) continue;  // a weld loop: first path wins
         const auto& f = joint.frame_in_link;
         const Eigen::Isometry3d next_in_at = forward ? f[0] * f[1].inverse() : f[1] * f[0].inverse();
@@ -149,7 +153,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
       }
     }
   }
-  for (std::size_t i = 0; i < n; ++i) body_index_.emplace(asset.links[i].name.text, body_of_link[i]);
+  body_of_link_ = body_of_link;
 
   // Combined mass properties. USD: a body without authored mass, inertia or COM gets them
   // from its colliders, which a text linter cannot see. URDF: a link without <inertial>
@@ -202,7 +206,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
   std::vector<bool> has_parent(bodies_.size(), false);
   for (const Joint& joint : asset.joints) {
     if (joint.type == JointType::Fixed) continue;
-    const int pa = index_of(joint.parent), pb = index_of(joint.child);
+    const int pa = side_index(joint, 0), pb = side_index(joint, 1);
     const int a = pa >= 0 ? body_of_link[static_cast<std::size_t>(pa)] : joint.parent.text.empty() ? world : -1;
     const int b = pb >= 0 ? body_of_link[static_cast<std::size_t>(pb)] : joint.child.text.empty() ? world : -1;
     if (a < 0 || b < 0 || a == b) continue;  // an undefined link, or a joint inside one body
@@ -214,6 +218,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
   }
   floating_.assign(bodies_.size(), false);
   joint_into_.assign(bodies_.size(), -1);
+  tree_of_joint_.assign(asset.joints.size(), -1);
   std::vector<bool> visited(bodies_.size(), false);
   std::vector<bool> used(edges.size(), false);
   const auto grow = [&](int root) {
@@ -239,8 +244,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
         tj.modelled = !is_multi_dof(edge.joint->type);
         // The joint frame in each body; the world side needs none (it does not move).
         const auto frame_in = [&](int body, int which) {
-          const Name& name = which == 0 ? edge.joint->parent : edge.joint->child;
-          const int link = index_of(name);
+          const int link = side_index(*edge.joint, which);
           const Eigen::Isometry3d& f = edge.joint->frame_in_link[static_cast<std::size_t>(which)];
           return body == world || link < 0 ? f : link_pose[static_cast<std::size_t>(link)] * f;
         };
@@ -254,7 +258,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
           tj.motion.head<3>() = axis;
           tj.motion.tail<3>() = in_child.translation().cross(axis);
         }
-        tree_index_.emplace(edge.joint, static_cast<int>(tree_.size()));
+        tree_of_joint_[*asset.index_of(*edge.joint)] = static_cast<int>(tree_.size());
         joint_into_[static_cast<std::size_t>(next)] = static_cast<int>(tree_.size());
         tree_.push_back(tj);
         pending.push_back(next);
@@ -346,9 +350,9 @@ void Articulation::solve() {
 }
 
 std::optional<Eigen::Vector3d> Articulation::sole_rotation_axis(const Link& link) const {
-  const auto it = body_index_.find(link.name.text);
-  if (it == body_index_.end()) return std::nullopt;
-  const auto b = static_cast<std::size_t>(it->second);
+  const int body = body_index(asset_->find_link(link.name.text));
+  if (body < 0) return std::nullopt;
+  const auto b = static_cast<std::size_t>(body);
   if (bodies_[b].world || bodies_[b].links.empty() || bodies_[b].links.front() != &link || joint_into_[b] < 0)
     return std::nullopt;
   const TreeJoint& into = tree_[static_cast<std::size_t>(joint_into_[b])];
@@ -357,8 +361,9 @@ std::optional<Eigen::Vector3d> Articulation::sole_rotation_axis(const Link& link
 }
 
 ArticulatedInertia Articulation::inertia(const Joint& joint) const {
-  auto it = tree_index_.find(&joint);
-  if (it != tree_index_.end()) return results_[static_cast<std::size_t>(it->second)];
+  const auto i = asset_->index_of(joint);
+  if (i && *i < tree_of_joint_.size() && tree_of_joint_[*i] >= 0)
+    return results_[static_cast<std::size_t>(tree_of_joint_[*i])];
   ArticulatedInertia none;
   none.reason = "the joint is not part of the articulation's tree";
   return none;

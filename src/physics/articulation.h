@@ -94,8 +94,11 @@ class Articulation {
   std::vector<int> roots_;                          // body indices, one per tree
   std::vector<bool> floating_;                      // per body: a floating root
   std::vector<int> joint_into_;                     // per body: the tree_ entry whose child it is, or -1
-  std::unordered_map<std::string_view, int> body_index_;  // link name → body
-  std::unordered_map<const Joint*, int> tree_index_;      // joint → tree_ entry
+  // Indexed by the asset's link and joint positions: no name is hashed after build().
+  const Asset* asset_ = nullptr;
+  std::vector<int> body_of_link_;                   // per link: its body
+  std::vector<int> tree_of_joint_;                  // per joint: its tree_ entry, or -1
+  int body_index(const Link* link) const;           // -1 for none
   std::vector<ArticulatedInertia> results_;         // per tree_ entry
 };
 
