@@ -123,8 +123,9 @@ bool has_control(std::string_view value) {
 }
 
 // urdfdom's strToDouble reads with a classic-locale stringstream and needs all of it
-// consumed: this accepts the plain decimal subset of that, finite and not denormal.
-bool plain_number(std::string_view text) {
+// consumed: this accepts the plain decimal subset of that, finite and not denormal, and
+// gives its value.
+std::optional<double> plain_value(std::string_view text) {
   std::size_t i = 0;
   auto digits = [&] {
     const std::size_t start = i;
@@ -137,57 +138,51 @@ bool plain_number(std::string_view text) {
     ++i;
     mantissa += digits();  // "1." reads as 1
   }
-  if (mantissa == 0) return false;
+  if (mantissa == 0) return std::nullopt;
   if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
     ++i;
     if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
-    if (digits() == 0) return false;
+    if (digits() == 0) return std::nullopt;
   }
-  if (i != text.size()) return false;
+  if (i != text.size()) return std::nullopt;
   // from_chars takes no leading '+'; overflow and underflow come back as out of range.
   const std::size_t skip = text[0] == '+' ? 1 : 0;
   double value = 0;
   const auto [end, ec] = std::from_chars(text.data() + skip, text.data() + text.size(), value);
-  return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value) &&
-         (value == 0 || std::fabs(value) >= 1e-300);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
+      (value != 0 && std::fabs(value) < 1e-300))
+    return std::nullopt;
+  return value;
 }
 
-// urdfdom's Vector3::init: pieces split at spaces, empty ones skipped, exactly three.
-bool plain_vector(std::string_view text) {
+bool plain_number(std::string_view text) { return plain_value(text).has_value(); }
+
+// urdfdom's split_string at ' ' with the empty pieces skipped: how many pieces there are,
+// or -1 when one is not a plain number in [low, high].
+int plain_numbers(std::string_view text, double low = -HUGE_VAL, double high = HUGE_VAL) {
   int count = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
     const std::size_t end = std::min(text.find(' ', pos), text.size());
     const std::string_view piece = text.substr(pos, end - pos);
     if (!piece.empty()) {
-      if (!plain_number(piece)) return false;
+      const auto value = plain_value(piece);
+      if (!value || *value < low || *value > high) return -1;
       ++count;
     }
     pos = end + 1;
   }
-  return count == 3;
+  return count;
 }
+
+// urdfdom's Vector3::init: exactly three numbers.
+bool plain_vector(std::string_view text) { return plain_numbers(text) == 3; }
 
 // A vector urdfdom reads without complaint, when present.
 bool plain_vector_or_absent(const std::optional<std::string_view>& text) { return !text || plain_vector(*text); }
 
 // urdfdom's Color::init: every piece a number in [0, 1] (a wrong count is not an error).
-bool plain_color(std::string_view text) {
-  std::size_t pos = 0;
-  while (pos <= text.size()) {
-    const std::size_t end = std::min(text.find(' ', pos), text.size());
-    const std::string_view piece = text.substr(pos, end - pos);
-    if (!piece.empty()) {
-      if (!plain_number(piece)) return false;
-      double value = 0;
-      const std::size_t skip = piece[0] == '+' ? 1 : 0;
-      std::from_chars(piece.data() + skip, piece.data() + piece.size(), value);
-      if (value < 0 || value > 1) return false;
-    }
-    pos = end + 1;
-  }
-  return true;
-}
+bool plain_color(std::string_view text) { return plain_numbers(text, 0, 1) >= 0; }
 
 class Verdict {
  public:
