@@ -31,16 +31,18 @@ struct Placement {
   bool welded_inertia = false;   // BodyStart: a link welded to it carries a non-zero tensor
 };
 
-std::unordered_map<const Link*, Placement> placements(const Asset& asset, const std::vector<RigidBody>& bodies) {
-  std::unordered_map<const Link*, Placement> out;
+// Per link (by position in asset.links): where it sits; a link no joint has as its child is a root.
+std::vector<Placement> placements(const Asset& asset, const std::vector<RigidBody>& bodies) {
+  std::vector<Placement> out(asset.links.size());
+  const auto at = [&](const Link* link) -> Placement& { return out[*asset.index_of(*link)]; };
   for (const Joint& joint : asset.joints)
-    if (const Link* child = asset.find_link(joint.child.text))
-      out[child] = {joint.type == JointType::Fixed ? Role::Welded : Role::BodyStart, &joint};
+    if (const Link* child = asset.side_link(joint, 1))
+      at(child) = {joint.type == JointType::Fixed ? Role::Welded : Role::BodyStart, &joint};
   for (const RigidBody& body : bodies) {
     if (body.links.empty()) continue;
-    Placement& start = out[body.links.front()] = {Role::BodyStart, body.joint, true};
+    Placement& start = at(body.links.front()) = {Role::BodyStart, body.joint, true};
     for (const Link* link : body.links) {
-      out[link].moves = true;
+      at(link).moves = true;
       if (link != body.links.front() && link->inertial && link->inertial->inertia_authored &&
           !link->inertial->inertia.isZero(0.0))
         start.welded_inertia = true;
@@ -58,10 +60,7 @@ class InertiaInvalid final : public Rule {
     const std::vector<RigidBody> bodies = moving_bodies(asset);
     if (urdf) check_bodies(bodies, out);
     const auto where = placements(asset, bodies);
-    for (const Link& link : asset.links) {
-      const auto found = where.find(&link);
-      check_link(link, found == where.end() ? Placement{} : found->second, settings, out);
-    }
+    for (std::size_t i = 0; i < asset.links.size(); ++i) check_link(asset.links[i], where[i], settings, out);
     const auto equal = report_mass_equals_inertia(asset, out);
     report_gyration(asset, where, equal, out);
   }
@@ -104,7 +103,7 @@ class InertiaInvalid final : public Rule {
   // 0.01 kg·m² (Rethink's electric gripper), every Minitaur link. One warning per file at the
   // worst link; the others are notes. Only a body's own link is judged: a welded frame's tensor
   // is merged into a heavier body. Placeholders already reported above are not repeated.
-  static void report_gyration(const Asset& asset, const std::unordered_map<const Link*, Placement>& where,
+  static void report_gyration(const Asset& asset, const std::vector<Placement>& where,
                               const std::vector<const Link*>& already, Reporter& out) {
     struct Found {
       const Link* link;
@@ -113,11 +112,13 @@ class InertiaInvalid final : public Rule {
     };
     std::vector<Found> found;
     const auto articulation = physics::shared_articulation(asset);
-    for (const Link& link : asset.links) {
-      const auto placed = where.find(&link);
-      if (placed == where.end() || placed->second.role != Role::BodyStart || !link.inertial) continue;
-      if (physics::pasted_tensor(link.inertial->inertia) ||
-          std::find(already.begin(), already.end(), &link) != already.end())
+    std::vector<bool> reported(asset.links.size(), false);
+    for (const Link* link : already)
+      if (const auto i = asset.index_of(*link)) reported[*i] = true;
+    for (std::size_t i = 0; i < asset.links.size(); ++i) {
+      const Link& link = asset.links[i];
+      if (where[i].role != Role::BodyStart || !link.inertial) continue;
+      if (physics::pasted_tensor(link.inertial->inertia) || reported[i])
         continue;
       const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link),
                                              articulation->sole_rotation_axis(link));

@@ -26,8 +26,8 @@ class StructureUndefinedLink final : public Rule {
     const bool urdf = asset.format == SourceFormat::Urdf;
     std::vector<std::string_view> undefined_parents, undefined_children;
     for (const Joint& joint : asset.joints) {
-      if (!joint.parent.text.empty() && !asset.find_link(joint.parent.text)) undefined_parents.push_back(joint.parent.text);
-      if (!joint.child.text.empty() && !asset.find_link(joint.child.text)) undefined_children.push_back(joint.child.text);
+      if (!joint.parent.text.empty() && !asset.side_link(joint, 0)) undefined_parents.push_back(joint.parent.text);
+      if (!joint.child.text.empty() && !asset.side_link(joint, 1)) undefined_children.push_back(joint.child.text);
     }
     // One undefined parent, never a child, hanging one joint: the attachment point of a
     // fragment meant to be included into a larger robot.
@@ -39,7 +39,7 @@ class StructureUndefinedLink final : public Rule {
           // USD: no body, or a static prim, anchors the joint to the world; MJCF: the worldbody.
           if (!urdf) continue;
           out.report(link->span, fmt::format("{} names no {} link", joint_label(joint), role));
-        } else if (!asset.find_link(link->text)) {
+        } else if (!asset.side_link(joint, link == &joint.parent ? 0 : 1)) {
           Diagnostic& d = out.report(link->span, fmt::format("{} link '{}' of {} is not defined", role, link->text,
                                                              joint_label(joint)));
           if (!urdf) continue;

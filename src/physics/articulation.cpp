@@ -350,7 +350,7 @@ void Articulation::solve() {
 }
 
 std::optional<Eigen::Vector3d> Articulation::sole_rotation_axis(const Link& link) const {
-  const int body = body_index(asset_->find_link(link.name.text));
+  const int body = body_index(&link);
   if (body < 0) return std::nullopt;
   const auto b = static_cast<std::size_t>(body);
   if (bodies_[b].world || bodies_[b].links.empty() || bodies_[b].links.front() != &link || joint_into_[b] < 0)
