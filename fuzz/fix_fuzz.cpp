@@ -1,6 +1,7 @@
 // Fix round trip: lint, apply every fix (unsafe ones too) in memory, re-read. The result
 // must parse whenever the input parsed, and a second round must change nothing.
-// The first byte picks the format (even: URDF, odd: USDA layers).
+// The first byte picks the format by its value modulo 3: 0 URDF ('0'), 1 USDA layers ('1'),
+// 2 MJCF files ('2').
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -23,11 +24,12 @@ bool parses(const FileReport& report) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
-  const bool usda = data[0] & 1;
+  const int format = data[0] % 3;
   const std::string_view input(reinterpret_cast<const char*>(data) + 1, size - 1);
   fuzz::MemoryFileSystem files;
-  const std::string path = usda ? "root.usda" : "robot.urdf";
-  if (usda) fuzz::split_layers(input, files);
+  const std::string path = format == 1 ? "root.usda" : format == 2 ? "robot.xml" : "robot.urdf";
+  if (format == 1) fuzz::split_layers(input, files);
+  else if (format == 2) fuzz::split_mjcf(input, files);
   else files.set(path, std::string(input));
   Settings settings;
   settings.allow_outside_root = true;

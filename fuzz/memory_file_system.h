@@ -26,22 +26,35 @@ class MemoryFileSystem final : public FileSystem {
   std::map<std::string, std::string> files_;
 };
 
-// Splits `input` into layers; returns the root layer's text and registers the others.
-inline std::string split_layers(std::string_view input, MemoryFileSystem& files) {
+// Splits `input` into at most 8 files at each `marker` (which starts with a newline): the
+// first part is `root`, the others <prefix>1<extension>, <prefix>2<extension>, ... without
+// that newline. Returns the root's text.
+inline std::string split_files(std::string_view input, MemoryFileSystem& files, std::string_view marker,
+                               const std::string& root_name, const std::string& prefix, const std::string& extension) {
   std::string root;
   int index = 0;
   std::size_t start = 0;
   while (start <= input.size()) {
-    std::size_t next = input.find("\n#usda", start + 1);
+    std::size_t next = input.find(marker, start + 1);
     if (next == std::string_view::npos || index >= 8) next = input.size();
     std::string text(input.substr(start, next - start));
     if (index == 0) root = text;
-    else files.set("l" + std::to_string(index) + ".usda", text.substr(1));  // drop the newline
+    else files.set(prefix + std::to_string(index) + extension, text.substr(1));  // drop the newline
     ++index;
     start = next == input.size() ? input.size() + 1 : next;
   }
-  files.set("root.usda", root);
+  files.set(root_name, root);
   return root;
+}
+
+// USDA layers: split at each `\n#usda` into root.usda, l1.usda, l2.usda, ...
+inline std::string split_layers(std::string_view input, MemoryFileSystem& files) {
+  return split_files(input, files, "\n#usda", "root.usda", "l", ".usda");
+}
+
+// MJCF files: split at each `\n<mujoco` into robot.xml, i1.xml, i2.xml, ... (for <include>).
+inline std::string split_mjcf(std::string_view input, MemoryFileSystem& files) {
+  return split_files(input, files, "\n<mujoco", "robot.xml", "i", ".xml");
 }
 
 }  // namespace assetlint::fuzz

@@ -17,11 +17,13 @@ rm -rf "$seeds" && mkdir -p "$seeds"
 case "$target" in
   urdf_fuzz) find "$root/fixtures" -name '*.urdf' -exec cp {} "$seeds/" \; ;;
   usda_fuzz) find "$root/fixtures" -name '*.usda' -exec cp {} "$seeds/" \; ;;
+  mjcf_fuzz) grep -rlZ --include='*.xml' '<mujoco' "$root/fixtures" | xargs -0 -I{} cp {} "$seeds/" ;;
   config_fuzz) i=0; for f in $(find "$root/fixtures" -name 'asset-lint.toml'); do cp "$f" "$seeds/$i.toml"; i=$((i+1)); done ;;
   fix_fuzz)
-    # The first byte picks the format: '0' URDF, '1' USDA.
+    # The first byte picks the format: '0' URDF, '1' USDA, '2' MJCF.
     for f in $(find "$root/fixtures" -name '*.urdf'); do { printf 0; cat "$f"; } > "$seeds/u-$(basename "$f")"; done
-    for f in $(find "$root/fixtures" -name '*.usda'); do { printf 1; cat "$f"; } > "$seeds/s-$(basename "$f")"; done ;;
+    for f in $(find "$root/fixtures" -name '*.usda'); do { printf 1; cat "$f"; } > "$seeds/s-$(basename "$f")"; done
+    for f in $(grep -rl --include='*.xml' '<mujoco' "$root/fixtures"); do { printf 2; cat "$f"; } > "$seeds/m-$(basename "$f")"; done ;;
 esac
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}"
 export LSAN_OPTIONS="suppressions=$root/sanitizers/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"

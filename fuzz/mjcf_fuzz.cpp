@@ -1,0 +1,18 @@
+// MJCF bytes, split into files at each `\n<mujoco` (robot.xml, i1.xml, ... for <include>)
+// → read (defaults, includes, compiler settings) → every rule.
+#include <cstdint>
+#include <string>
+
+#include "memory_file_system.h"
+#include "pipeline/lint.h"
+
+using namespace assetlint;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::MemoryFileSystem files;
+  std::string root = fuzz::split_mjcf(std::string_view(reinterpret_cast<const char*>(data), size), files);
+  Settings settings;
+  settings.allow_outside_root = true;  // a memory file system has no tree to leave
+  (void)lint_text("robot.xml", std::move(root), settings, files);
+  return 0;
+}
