@@ -116,32 +116,44 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
 
   // One Body per component, its frame the first link's; link frames placed by walking
   // the fixed joints.
-  std::unordered_multimap<int, const Joint*> fixed_at;
+  // The fixed joints at each link, in document order, as one array sliced by `first_fixed`.
+  std::vector<std::size_t> first_fixed(n + 1, 0);
   for (const Joint& joint : asset.joints) {
     if (joint.type != JointType::Fixed) continue;
     const int a = side_index(joint, 0), b = side_index(joint, 1);
     if (a < 0 || b < 0) continue;
-    fixed_at.emplace(a, &joint);
-    fixed_at.emplace(b, &joint);
+    ++first_fixed[static_cast<std::size_t>(a) + 1];
+    ++first_fixed[static_cast<std::size_t>(b) + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i) first_fixed[i + 1] += first_fixed[i];
+  std::vector<const Joint*> fixed_at(first_fixed[n]);
+  {
+    std::vector<std::size_t> fill(first_fixed.begin(), first_fixed.end() - 1);
+    for (const Joint& joint : asset.joints) {
+      if (joint.type != JointType::Fixed) continue;
+      const int a = side_index(joint, 0), b = side_index(joint, 1);
+      if (a < 0 || b < 0) continue;
+      fixed_at[fill[static_cast<std::size_t>(a)]++] = &joint;
+      fixed_at[fill[static_cast<std::size_t>(b)]++] = &joint;
+    }
   }
   std::vector<int> body_of_link(n, -1);
   std::vector<Eigen::Isometry3d> link_pose(n, Eigen::Isometry3d::Identity());
+  std::vector<int> pending;  // breadth-first queue of one component, reused
   for (std::size_t start = 0; start < n; ++start) {
     if (body_of_link[start] >= 0) continue;
     const int body = static_cast<int>(bodies_.size());
     bodies_.emplace_back();
-    std::deque<int> pending{static_cast<int>(start)};
+    pending.assign(1, static_cast<int>(start));
     body_of_link[start] = body;
-    while (!pending.empty()) {
-      const int at = pending.front();
-      pending.pop_front();
+    for (std::size_t head = 0; head < pending.size(); ++head) {
+      const int at = pending[head];
       Body& b = bodies_.back();
       b.links.push_back(&asset.links[static_cast<std::size_t>(at)]);
       b.link_in_body.push_back(link_pose[static_cast<std::size_t>(at)]);
       if (to_world[static_cast<std::size_t>(at)]) b.world = true;
-      auto [first, last] = fixed_at.equal_range(at);
-      for (auto it = first; it != last; ++it) {
-        const Joint& joint = *it->second;
+      for (std::size_t k = first_fixed[static_cast<std::size_t>(at)]; k < first_fixed[static_cast<std::size_t>(at) + 1]; ++k) {
+        const Joint& joint = *fixed_at[k];
         const bool forward = side_index(joint, 0) == at;
         const int next = forward ? side_index(joint, 1) : side_index(joint, 0);
         if (body_of_link[static_cast<std::size_t>(next)] >= 0) continue;  // a weld loop: first path wins
