@@ -27,9 +27,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int format = data[0] % 3;
   const std::string_view input(reinterpret_cast<const char*>(data) + 1, size - 1);
   fuzz::MemoryFileSystem files;
-  const std::string path = format == 1 ? "root.usda" : format == 2 ? "robot.xml" : "robot.urdf";
+  // MJCF as .mjcf: an .xml file is MJCF only when its root is <mujoco>; anything else is
+  // refused before reading, which is not what this target tests.
+  const std::string path = format == 1 ? "root.usda" : format == 2 ? "robot.mjcf" : "robot.urdf";
   if (format == 1) fuzz::split_layers(input, files);
-  else if (format == 2) fuzz::split_mjcf(input, files);
+  else if (format == 2) files.set(path, fuzz::split_mjcf(input, files));
   else files.set(path, std::string(input));
   Settings settings;
   settings.allow_outside_root = true;
