@@ -10,6 +10,7 @@
 
 #include "formats/usda/skipped_layers.h"
 #include "rules/reader_rules.h"
+#include "util/numbers.h"
 
 namespace assetlint::usda {
 namespace {
@@ -90,9 +91,9 @@ class Reader {
       if (prim.has_api_schema("PhysxArticulationAPI")) {
         Scene& scene = result_.asset.scene;
         if (!scene.position_iterations)
-          scene.position_iterations = number(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
+          scene.position_iterations = positive_setting(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
         if (!scene.velocity_iterations)
-          scene.velocity_iterations = number(prim, "physxArticulation:solverVelocityIterationCount", Unit::None);
+          scene.velocity_iterations = positive_setting(prim, "physxArticulation:solverVelocityIterationCount", Unit::None);
       }
     }
     result_.asset.index_names();
@@ -162,6 +163,19 @@ class Reader {
     Quantity q = Quantity::from_authored(*d, unit, v.span, scale);
     q.declaration = declaration_span(opinion->file, opinion->attribute->default_declaration_span);
     return q;
+  }
+
+  // A solver setting (a rate, an iteration count) that every formula divides by or
+  // multiplies with: a value that is not a finite positive number is reported and left out,
+  // and the run falls back to the configuration or PhysX's default.
+  OptQuantity positive_setting(const ComposedPrim& prim, std::string_view name, Unit unit) {
+    OptQuantity q = number(prim, name, unit);
+    if (!q || (std::isfinite(q->authored) && q->authored > 0)) return q;
+    report(rules::kParseError, q->span,
+           fmt::format("{} = {} is not a positive number; asset-lint ignores it", name, format_number(q->authored)),
+           {"PhysX needs a positive rate and positive iteration counts; the configuration's value or PhysX's default "
+            "is used instead."});
+    return std::nullopt;
   }
 
   std::optional<std::vector<double>> numbers(const ComposedPrim& prim, std::string_view name, std::size_t count,
@@ -508,11 +522,12 @@ class Reader {
   void read_scene(const ComposedPrim& prim) {
     Scene& scene = result_.asset.scene;
     if (!prim.has_api_schema("PhysxSceneAPI")) return;
-    if (!scene.timesteps_per_second) scene.timesteps_per_second = number(prim, "physxScene:timeStepsPerSecond", Unit::PerSecond);
+    if (!scene.timesteps_per_second)
+      scene.timesteps_per_second = positive_setting(prim, "physxScene:timeStepsPerSecond", Unit::PerSecond);
     if (!scene.min_position_iterations)
-      scene.min_position_iterations = number(prim, "physxScene:minPositionIterationCount", Unit::None);
+      scene.min_position_iterations = positive_setting(prim, "physxScene:minPositionIterationCount", Unit::None);
     if (!scene.max_position_iterations)
-      scene.max_position_iterations = number(prim, "physxScene:maxPositionIterationCount", Unit::None);
+      scene.max_position_iterations = positive_setting(prim, "physxScene:maxPositionIterationCount", Unit::None);
     if (scene.solver.empty()) {
       if (auto opinion = prim.attribute("physxScene:solverType")) {
         if (auto token = opinion->attribute->default_value->as_string()) {
