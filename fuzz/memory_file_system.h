@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "engine/file_system.h"
+#include "pipeline/lint.h"
 
 namespace assetlint::fuzz {
 
@@ -55,6 +56,14 @@ inline std::string split_layers(std::string_view input, MemoryFileSystem& files)
 // MJCF files: split at each `\n<mujoco` into robot.xml, i1.xml, i2.xml, ... (for <include>).
 inline std::string split_mjcf(std::string_view input, MemoryFileSystem& files) {
   return split_files(input, files, "\n<mujoco", "robot.xml", "i", ".xml");
+}
+
+// Lints `root_text` as `root_path` with the other files in `files`, every rule on. A memory
+// file system has no tree to leave, so layers and includes anywhere in it are read.
+inline void lint_in_memory(const std::string& root_path, std::string root_text, const MemoryFileSystem& files) {
+  Settings settings;
+  settings.allow_outside_root = true;
+  (void)lint_text(root_path, std::move(root_text), settings, files);
 }
 
 }  // namespace assetlint::fuzz

@@ -4,15 +4,12 @@
 #include <string>
 
 #include "memory_file_system.h"
-#include "pipeline/lint.h"
 
 using namespace assetlint;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::MemoryFileSystem files;
   std::string root = fuzz::split_mjcf(std::string_view(reinterpret_cast<const char*>(data), size), files);
-  Settings settings;
-  settings.allow_outside_root = true;  // a memory file system has no tree to leave
-  (void)lint_text("robot.xml", std::move(root), settings, files);
+  fuzz::lint_in_memory("robot.xml", std::move(root), files);
   return 0;
 }

@@ -2,7 +2,6 @@
 #include <cstdint>
 #include <string>
 
-#include "pipeline/lint.h"
 #include "memory_file_system.h"
 
 using namespace assetlint;
@@ -10,8 +9,6 @@ using namespace assetlint;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::MemoryFileSystem files;
   std::string root = fuzz::split_layers(std::string_view(reinterpret_cast<const char*>(data), size), files);
-  Settings settings;
-  settings.allow_outside_root = true;  // a memory file system has no tree to leave
-  (void)lint_text("root.usda", std::move(root), settings, files);
+  fuzz::lint_in_memory("root.usda", std::move(root), files);
   return 0;
 }

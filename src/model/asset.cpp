@@ -55,18 +55,22 @@ const Joint* Asset::followed_joint(const Joint& mimic) const {
   return reference;
 }
 
-std::optional<std::size_t> Asset::index_of(const Link& link) const {
-  const std::less<const Link*> before;
-  if (links.empty() || before(&link, links.data()) || !before(&link, links.data() + links.size())) return std::nullopt;
-  return static_cast<std::size_t>(&link - links.data());
+namespace {
+
+// The position of `element` in `items`, when it is one of them.
+template <class T>
+std::optional<std::size_t> position_in(const std::vector<T>& items, const T& element) {
+  const std::less<const T*> before;
+  if (items.empty() || before(&element, items.data()) || !before(&element, items.data() + items.size()))
+    return std::nullopt;
+  return static_cast<std::size_t>(&element - items.data());
 }
 
-std::optional<std::size_t> Asset::index_of(const Joint& joint) const {
-  const std::less<const Joint*> before;
-  if (joints.empty() || before(&joint, joints.data()) || !before(&joint, joints.data() + joints.size()))
-    return std::nullopt;
-  return static_cast<std::size_t>(&joint - joints.data());
-}
+}  // namespace
+
+std::optional<std::size_t> Asset::index_of(const Link& link) const { return position_in(links, link); }
+
+std::optional<std::size_t> Asset::index_of(const Joint& joint) const { return position_in(joints, joint); }
 
 const Link* Asset::side_link(const Joint& joint, int side) const {
   if (indexed())
