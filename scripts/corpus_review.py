@@ -3,7 +3,7 @@
 
 Usage (from the repository root, after a build):
   scripts/corpus_review.py --record-before   # store today's counts as the "before" column
-  scripts/corpus_review.py                   # rewrite the table in docs/rules.md (before/after)
+  scripts/corpus_review.py                   # rewrite the table in docs/corpus-review.md (before/after)
   scripts/corpus_review.py --sample 8        # print a sample of N findings per rule, for reading
 
 The corpus is ../shared/corpus (override with --corpus), checked in one run from inside it
@@ -65,7 +65,7 @@ def table(before, after):
 
 
 def write_table(text):
-    rules_md = ROOT / "docs" / "rules.md"
+    rules_md = ROOT / "docs" / "corpus-review.md"
     content = rules_md.read_text()
     block = f"{TABLE_START}\n{text}\n{TABLE_END}"
     if TABLE_START in content:

@@ -2,6 +2,9 @@
 // sections users rely on.
 #include <catch2/catch.hpp>
 
+#include <regex>
+#include <vector>
+
 #include "rules/registry.h"
 #include "test_support.h"
 
@@ -22,5 +25,20 @@ TEST_CASE("docs/rules holds no page for a rule that does not exist", "[docs]") {
   for (const auto& entry : std::filesystem::directory_iterator(assetlint::test::source_dir() / "docs" / "rules")) {
     INFO(entry.path().string());
     CHECK(assetlint::rules::find_rule(entry.path().stem().string()) != nullptr);
+  }
+}
+
+// User documentation speaks to users: the project's own history (issue numbers, work sessions,
+// the development corpus's path) belongs in docs/corpus-review.md, not in the pages users read.
+TEST_CASE("README and rule pages carry no development history", "[docs]") {
+  const std::regex history(R"((\b[Ii]ssues? \d)|(\b[Ss]ession \d)|(\.\./shared))");
+  std::vector<std::filesystem::path> pages{assetlint::test::source_dir() / "README.md"};
+  for (const auto& entry : std::filesystem::directory_iterator(assetlint::test::source_dir() / "docs" / "rules"))
+    pages.push_back(entry.path());
+  for (const auto& page : pages) {
+    const std::string text = assetlint::test::read_file(page);
+    std::smatch match;
+    INFO(page.filename().string());
+    if (std::regex_search(text, match, history)) FAIL_CHECK("'" << match.str() << "' at offset " << match.position());
   }
 }
