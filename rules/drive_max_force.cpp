@@ -21,6 +21,7 @@ class DriveMaxForce final : public Rule {
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const Joint* spec = physics::spec_joint(asset, settings);
     const SharedValues efforts(asset, &Joint::effort);
+    const ZeroEfforts zero_efforts = zero_effort_joints(asset);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
       const bool usd = asset.format == SourceFormat::Usda;
@@ -30,7 +31,7 @@ class DriveMaxForce final : public Rule {
       // spec names it; otherwise its effort is only a limit.
       const auto required = &joint == spec ? physics::required_force(asset, settings, joint) : std::nullopt;
       const bool driven = joint.drive || (&joint == spec && (settings.gripper.driven_joint || required));
-      Context c{{asset, settings, joint, usd, driven, out}, required ? &*required : nullptr, &efforts};
+      Context c{{asset, settings, joint, usd, driven, out}, required ? &*required : nullptr, &efforts, &zero_efforts};
       if (usd && (!joint.drive->max_force || std::isinf(joint.drive->max_force->value))) {
         unbounded(c);
         continue;
@@ -43,10 +44,36 @@ class DriveMaxForce final : public Rule {
   }
 
  private:
+  // URDF joints whose effort is written as 0: on every movable joint of an arm it is a file-wide
+  // choice, reported once, at the first of them.
+  struct ZeroEfforts {
+    std::size_t count = 0;
+    std::size_t movable = 0;
+    const Joint* first = nullptr;
+    bool everywhere() const { return movable > 1 && count == movable; }
+  };
+
+  static ZeroEfforts zero_effort_joints(const Asset& asset) {
+    ZeroEfforts z;
+    if (asset.format != SourceFormat::Urdf) return z;
+    for (const Joint& joint : asset.joints) {
+      if (!is_single_dof(joint.type) || joint.is_mimic()) continue;
+      ++z.movable;
+      if (joint.effort && joint.effort->value == 0) {
+        ++z.count;
+        if (!z.first) z.first = &joint;
+      }
+    }
+    return z;
+  }
+
   struct Context : LimitCheck {
     const physics::RequiredForce* required;
     const SharedValues* efforts;
+    const ZeroEfforts* zero_efforts;
     const char* what() const { return usd ? "maxForce" : "effort"; }
+    // The joint a gripper's mimic joints follow: its effort is the grip.
+    bool gripper_driver() const { return !asset.mimic_followers(joint.name.text).empty(); }
   };
 
   void unbounded(const Context& c) const {
@@ -82,7 +109,10 @@ class DriveMaxForce final : public Rule {
     const std::size_t sharing = c.efforts->others(c.joint);
     const bool round_repeat = !c.usd && is_power_of_ten(q.value, 3) && sharing > 0;
     if (q.value < placeholder && !round_repeat) return;
-    Diagnostic& d = c.out.report(q.span, Severity::Info,
+    // On a gripper's driven joint the placeholder is the grip itself: a simulator that applies
+    // it squeezes with 1000 N·m where the real motor gives a few.
+    const bool grip = !c.usd && c.gripper_driver();
+    Diagnostic& d = c.out.report(q.span, grip ? Severity::Warning : Severity::Info,
                                  fmt::format("{} {} of {} looks like a placeholder", c.what(), describe(q), c.label()));
     if (q.value >= placeholder)
       d.note(fmt::format("At or above placeholder_force {}, the bound is effectively no bound.", format_number(placeholder)));
@@ -90,6 +120,17 @@ class DriveMaxForce final : public Rule {
       d.note(fmt::format("The same round {} is on {} other joint{} of the file: a value written for every joint, not "
                          "a motor's rating.",
                          format_number(q.value), sharing, sharing == 1 ? "" : "s"));
+    if (grip) {
+      d.note(fmt::format("{} mimic joint{} follow it: this is the gripper's driven joint, and its effort is the grip. "
+                         "Isaac Sim's importer writes it as the drive's maxForce and PhysX applies up to it; Gazebo and "
+                         "ros_control clamp commands to it; MuJoCo importers make it the actuator's force range. Each "
+                         "lets the simulated gripper hold what the real one drops.",
+                         c.asset.mimic_followers(c.joint.name.text).size(),
+                         c.asset.mimic_followers(c.joint.name.text).size() == 1 ? "" : "s"));
+      d.note("Take the motor's rated torque (or force) from the data sheet; asset-lint.toml's [gripper] spec derives the "
+             "force the payload needs.");
+      return;
+    }
     d.note("Without a [gripper] spec in asset-lint.toml this is an info. With one, the bound is judged against the "
            "force the payload needs (a placeholder far above it makes the simulated gripper hold what the real one drops).");
   }
@@ -116,11 +157,22 @@ class DriveMaxForce final : public Rule {
   // URDF effort ≤ 0: what it means depends on who reads the file. 0 and Gazebo's −1 are
   // conventions; any other negative number is a slip.
   void sentinel(const Context& c, const Quantity& q) const {
+    const ZeroEfforts& zeros = *c.zero_efforts;
+    const bool file_wide = q.value == 0 && zeros.everywhere();
+    if (file_wide && &c.joint != zeros.first) return;  // one finding for the file, at the first joint
     Diagnostic& d = report_sentinel(
-        c, q, "effort", c.required != nullptr,
+        c, q, "effort", c.required != nullptr || file_wide || (q.value == 0 && c.gripper_driver()),
         "Isaac Sim's URDF importer reads effort ≤ 0 as no limit (it writes maxForce = FLT_MAX); urdfdom-based "
         "tools (ROS controllers, Gazebo through SDFormat) read 0 as a zero force, and Gazebo reads −1 as no limit.",
         "force limit");
+    if (file_wide)
+      d.note(fmt::format("Every one of the {} movable joints writes effort=\"0\": in Gazebo, MuJoCo and ros_control the "
+                         "robot has no torque at all, in Isaac Sim it has unlimited torque. Write each joint's rated "
+                         "effort (the others are not reported separately).",
+                         zeros.movable));
+    else if (q.value == 0 && c.gripper_driver())
+      d.note("It is the joint the gripper's mimic joints follow: read as zero the gripper cannot close, read as no "
+             "limit it squeezes without bound.");
     if (c.required) {
       spec_notes(c, d);
       fix_to_spec(c, q, d);

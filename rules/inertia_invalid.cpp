@@ -13,6 +13,8 @@
 namespace assetlint::rules {
 namespace {
 
+constexpr double kPointMassGyration = 1e-6;  // m
+
 std::string moments_text(const Eigen::Vector3d& m) {
   return fmt::format("[{}, {}, {}] kg·m²", format_number(m[0], 4), format_number(m[1], 4), format_number(m[2], 4));
 }
@@ -58,7 +60,11 @@ class InertiaInvalid final : public Rule {
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const bool urdf = asset.format == SourceFormat::Urdf;
     const std::vector<RigidBody> bodies = moving_bodies(asset);
-    if (urdf) check_bodies(bodies, out);
+    if (urdf && !bodies.empty() && kinematic_description(asset)) {
+      report_kinematic_description(asset, bodies, out);
+      return;
+    }
+    if (urdf) check_bodies(asset, bodies, out);
     const auto where = placements(asset, bodies);
     for (std::size_t i = 0; i < asset.links.size(); ++i) check_link(asset.links[i], where[i], settings, out);
     const auto equal = report_mass_equals_inertia(asset, out);
@@ -160,10 +166,78 @@ class InertiaInvalid final : public Rule {
     d.note("Take mass and inertia from CAD (or compute them from the link's geometry).");
   }
 
+  // No link has an <inertial>: a description for RViz and MoveIt, not for simulation. One
+  // finding for the file says so; an error per link would say the same thing many times.
+  static bool kinematic_description(const Asset& asset) {
+    return std::none_of(asset.links.begin(), asset.links.end(), [](const Link& link) { return link.inertial.has_value(); });
+  }
+
+  static void report_kinematic_description(const Asset& asset, const std::vector<RigidBody>& bodies, Reporter& out) {
+    const Span at = asset.robot_name.span.valid() ? asset.robot_name.span : asset.robot_span;
+    out.report(at, Severity::Warning,
+               fmt::format("no link of '{}' has an <inertial>: a kinematic description, not a simulation model",
+                           asset.robot_name.text))
+        .note(fmt::format("{} bodies move ({} first), and none carries mass or inertia.", bodies.size(),
+                          joint_label(*bodies.front().joint)))
+        .note("Planning and visualisation (RViz, MoveIt) need none, but a simulator must invent them: Isaac Sim's "
+              "importer and PhysX compute them from the collision shapes at a default density, Gazebo drops "
+              "links without mass, MuJoCo infers them from geoms. The dynamics then belong to the importer, not "
+              "to the robot.")
+        .note("For simulation, add each link's <inertial> from CAD or the manufacturer's data.");
+  }
+
+  // Bodies with mass below them, and, per body, the body its joint's parent link belongs to.
+  struct BodyTree {
+    std::vector<int> parent;           // -1: hangs from the fixed base
+    std::vector<bool> massive_below;   // a body further out carries mass
+  };
+
+  static double body_mass(const RigidBody& body) {
+    double mass = 0.0;
+    for (const Link* link : body.links)
+      if (link->inertial && link->inertial->mass_authored && link->inertial->mass.value > 0)
+        mass += link->inertial->mass.value;
+    return mass;
+  }
+
+  static BodyTree body_tree(const Asset& asset, const std::vector<RigidBody>& bodies) {
+    std::vector<int> body_of_link(asset.links.size(), -1);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      for (const Link* link : bodies[b].links)
+        if (const auto i = asset.index_of(*link)) body_of_link[*i] = static_cast<int>(b);
+    BodyTree tree{std::vector<int>(bodies.size(), -1), std::vector<bool>(bodies.size(), false)};
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      if (const Link* parent = asset.side_link(*bodies[b].joint, 0))
+        if (const auto i = asset.index_of(*parent)) tree.parent[b] = body_of_link[*i];
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (body_mass(bodies[b]) <= 0) continue;
+      // Bounded by the body count: a cyclic file must not loop here.
+      std::size_t steps = 0;
+      for (int up = tree.parent[b]; up >= 0 && !tree.massive_below[up] && steps < bodies.size(); up = tree.parent[up], ++steps)
+        tree.massive_below[up] = true;
+    }
+    return tree;
+  }
+
+  // A massless body between the fixed base and the first massive body, with only massless
+  // bodies above it: the x/y/z/roll/pitch/yaw joints of a virtual floating base. The
+  // simulator sees the chain as one floating body carried by the first link with mass.
+  static bool virtual_base_body(const BodyTree& tree, const std::vector<RigidBody>& bodies, std::size_t b) {
+    if (!tree.massive_below[b]) return false;
+    std::size_t steps = 0;
+    for (int up = tree.parent[b]; up >= 0; up = tree.parent[up]) {
+      if (body_mass(bodies[up]) > 0 || ++steps > bodies.size()) return false;
+    }
+    return true;
+  }
+
   // A body that moves needs mass: without an inertial the importer invents one.
-  static void check_bodies(const std::vector<RigidBody>& bodies, Reporter& out) {
-    for (const RigidBody& body : bodies) {
+  static void check_bodies(const Asset& asset, const std::vector<RigidBody>& bodies, Reporter& out) {
+    const BodyTree tree = body_tree(asset, bodies);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const RigidBody& body = bodies[b];
       if (body.links.empty()) continue;  // undefined child: structure-undefined-link reports it
+      if (virtual_base_body(tree, bodies, b)) continue;
       const Link& child = *body.links.front();
       const Link* first_inertial = nullptr;
       bool any_negative = false;
@@ -207,7 +281,9 @@ class InertiaInvalid final : public Rule {
 
     const Eigen::Vector3d moments = physics::principal_moments(inertial.inertia);
     const double scale = std::max(std::abs(moments[0]), std::abs(moments[2]));
-    if (scale == 0) {
+    // Moments this small for the mass (a radius of gyration under a micrometre, entries of
+    // 1e-20 on a kilogram link) are a zero tensor written with rounding noise, not a shape.
+    if (scale <= mass * kPointMassGyration * kPointMassGyration) {
       // A point mass: welded to another body it only adds m·d² to that body (PhysX and the
       // URDF importers merge welded links), so only a body of its own is a problem.
       if (placement.role == Role::BodyStart && !placement.welded_inertia) report_point_mass(link, placement, out);

@@ -47,4 +47,9 @@ const RuleInfo kMimicLimitsRequired{
     "A USD mimic on (or following) a revolute joint without finite limits: omni.physx refuses to create it",
     Severity::Error, false, RuleOrigin::Reader, {}};
 
+const RuleInfo kXacroUnexpanded{
+    "xacro-unexpanded",
+    "An <xacro:…> element left in an expanded URDF: URDF readers skip it, so what it stood for is missing",
+    Severity::Warning, false, RuleOrigin::Reader, {}};
+
 }  // namespace assetlint::rules

@@ -14,5 +14,6 @@ extern const RuleInfo kUnusedSuppression;
 extern const RuleInfo kMjcfUnsupported;
 extern const RuleInfo kDriveInstanceIgnored;
 extern const RuleInfo kMimicLimitsRequired;
+extern const RuleInfo kXacroUnexpanded;
 
 }  // namespace assetlint::rules

@@ -37,7 +37,8 @@ const std::vector<const RuleInfo*>& catalog() {
   static const std::vector<const RuleInfo*> list = [] {
     std::vector<const RuleInfo*> all{&kParseError, &kUrdfInvalid, &kLayerUnresolved, &kStaleSchemaAttribute,
                                      &kMimicAxisInstance, &kUnusedSuppression, &kDriveInstanceIgnored,
-                                     &kMimicLimitsRequired, &kMjcfUnsupported, &kCompareMismatch, &kCompareUnmatched};
+                                     &kMimicLimitsRequired, &kMjcfUnsupported, &kXacroUnexpanded, &kCompareMismatch,
+                                     &kCompareUnmatched};
     for (const Rule* rule : checks()) all.push_back(&rule->info());
     std::sort(all.begin(), all.end(), [](const RuleInfo* a, const RuleInfo* b) { return a->id < b->id; });
     return all;

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -28,6 +29,7 @@ class UnitsAngleDegrees final : public Rule {
       // Multiples of π written as decimals (±31.4, ±9.42478) are deliberate radian values:
       // multi-turn ranges or "no limit" placeholders. Whole numbers (44, 90) are degrees.
       if (radian_like(lower.value, pi_tolerance) && radian_like(upper.value, pi_tolerance)) continue;
+      if (unlimited_stand_in(asset, joint)) continue;
       const double lower_rad = radians_from_degrees(lower.authored);
       const double upper_rad = radians_from_degrees(upper.authored);
       Diagnostic& d = out.report(largest == std::fabs(upper.value) ? upper.span : lower.span,
@@ -53,6 +55,21 @@ class UnitsAngleDegrees final : public Rule {
   }
 
  private:
+  // A symmetric bound on a joint of a virtual base (a massless child link, or the same ±value
+  // on a prismatic sibling: ±20 rad beside ±20 m) stands for "unlimited"; read as degrees it
+  // would clamp a floating base to ±20°.
+  static bool unlimited_stand_in(const Asset& asset, const Joint& joint) {
+    if (joint.lower->authored != -joint.upper->authored) return false;
+    const double bound = std::fabs(joint.upper->authored);
+    const Link* child = asset.side_link(joint, 1);
+    const bool massless_child = child && (!child->inertial || (child->inertial->mass_authored && child->inertial->mass.value == 0));
+    if (massless_child) return true;
+    return std::any_of(asset.joints.begin(), asset.joints.end(), [&](const Joint& other) {
+      return other.type == JointType::Prismatic && other.lower && other.upper &&
+             other.lower->authored == -other.upper->authored && std::fabs(other.upper->authored) == bound;
+    });
+  }
+
   static bool radian_like(double value, double tolerance) {
     if (value == 0) return true;
     if (value == std::round(value)) return false;

@@ -35,7 +35,7 @@ class UrdfReader {
       parse_error(element_span(robot), fmt::format("not a URDF: the root element is <{}>, expected <robot>", robot->name));
       return fail();
     }
-    if (may_hold_xacro(doc_.document()) && find_xacro()) return fail();
+    if (may_hold_xacro(doc_.document()) && find_xacro_expression()) return fail();
 
     result_.asset.robot_name = name_of(robot);
     result_.asset.robot_span = element_span(robot);
@@ -127,13 +127,10 @@ class UrdfReader {
     return false;
   }
 
-  // The first xacro element or expression, in document order.
-  bool find_xacro() {
+  // An unexpanded `${…}` or `$(…)` means the file is xacro source: its values are not values yet,
+  // so nothing in it can be judged. The first one is a parse error.
+  bool find_xacro_expression() {
     for (const Element& el : doc_.scan().tags) {
-      if (el.name.starts_with("xacro:")) {
-        parse_error(element_span(&el), fmt::format("unexpanded xacro: <{}>; run `xacro` to produce a URDF first", el.name));
-        return true;
-      }
       for (const xml::XmlAttributeSpan& a : el.attributes) {
         const std::string_view value = doc_.value(a);
         if (value.find("${") != std::string_view::npos || value.find("$(") != std::string_view::npos) {
@@ -143,7 +140,24 @@ class UrdfReader {
         }
       }
     }
+    report_stray_xacro_elements();
     return false;
+  }
+
+  // Without expressions, an <xacro:…> element is a leftover in an expanded URDF: urdfdom and the
+  // importers skip elements they do not know, so the file is read, and what the element was
+  // meant to produce (a material, a sensor, a whole macro's links) is simply absent.
+  void report_stray_xacro_elements() {
+    for (const Element& el : doc_.scan().tags) {
+      if (!el.name.starts_with("xacro:")) continue;
+      Diagnostic finding{std::string(rules::kXacroUnexpanded.id), rules::kXacroUnexpanded.default_severity,
+                         element_span(&el),
+                         fmt::format("<{}> left in an expanded URDF; URDF readers skip it", el.name), std::nullopt, {}};
+      finding.note("urdfdom, ROS and simulator importers ignore elements they do not know: whatever this xacro "
+                   "element would have produced is missing from the robot. The rest of the file is checked.");
+      finding.note("Expand the xacro source again, or delete the element if nothing is missing.");
+      result_.diagnostics.push_back(std::move(finding));
+    }
   }
 
   void read_link(const Element* el) {
