@@ -121,12 +121,13 @@ class DriveMaxForce final : public Rule {
                          "a motor's rating.",
                          format_number(q.value), sharing, sharing == 1 ? "" : "s"));
     if (grip) {
-      d.note(fmt::format("{} mimic joint{} follow it: this is the gripper's driven joint, and its effort is the grip. "
+      d.note(fmt::format("{} mimic joint{} {} it: this is the gripper's driven joint, and its effort is the grip. "
                          "Isaac Sim's importer writes it as the drive's maxForce and PhysX applies up to it; Gazebo and "
                          "ros_control clamp commands to it; MuJoCo importers make it the actuator's force range. Each "
                          "lets the simulated gripper hold what the real one drops.",
                          c.asset.mimic_followers(c.joint.name.text).size(),
-                         c.asset.mimic_followers(c.joint.name.text).size() == 1 ? "" : "s"));
+                         c.asset.mimic_followers(c.joint.name.text).size() == 1 ? "" : "s",
+                         c.asset.mimic_followers(c.joint.name.text).size() == 1 ? "follows" : "follow"));
       d.note("Take the motor's rated torque (or force) from the data sheet; asset-lint.toml's [gripper] spec derives the "
              "force the payload needs.");
       return;

@@ -222,13 +222,17 @@ class InertiaInvalid final : public Rule {
   // A massless body between the fixed base and the first massive body, with only massless
   // bodies above it: the x/y/z/roll/pitch/yaw joints of a virtual floating base. The
   // simulator sees the chain as one floating body carried by the first link with mass.
-  static bool virtual_base_body(const BodyTree& tree, const std::vector<RigidBody>& bodies, std::size_t b) {
+  static bool virtual_base_body(const Asset& asset, const BodyTree& tree, const std::vector<RigidBody>& bodies,
+                                std::size_t b) {
     if (!tree.massive_below[b]) return false;
-    std::size_t steps = 0;
+    std::size_t top = b, steps = 0;
     for (int up = tree.parent[b]; up >= 0; up = tree.parent[up]) {
       if (body_mass(bodies[up]) > 0 || ++steps > bodies.size()) return false;
+      top = static_cast<std::size_t>(up);
     }
-    return true;
+    // The chain must hang from a massless base (the world frame), not from a robot's base link.
+    const Link* base = asset.side_link(*bodies[top].joint, 0);
+    return base && !(base->inertial && base->inertial->mass_authored && base->inertial->mass.value > 0);
   }
 
   // A body that moves needs mass: without an inertial the importer invents one.
@@ -237,7 +241,7 @@ class InertiaInvalid final : public Rule {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       const RigidBody& body = bodies[b];
       if (body.links.empty()) continue;  // undefined child: structure-undefined-link reports it
-      if (virtual_base_body(tree, bodies, b)) continue;
+      if (virtual_base_body(asset, tree, bodies, b)) continue;
       const Link& child = *body.links.front();
       const Link* first_inertial = nullptr;
       bool any_negative = false;

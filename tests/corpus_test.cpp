@@ -122,8 +122,12 @@ TEST_CASE("corpus: real findings on real files", "[corpus]") {
   CHECK(missing->severity == Severity::Error);
   CHECK(std::any_of(missing->notes.begin(), missing->notes.end(),
                     [](const Note& n) { return n.message == "Did you mean 'Left_index_q1'?"; }));
-  // Missing inertials on moving links and a non-positive-definite tensor.
-  CHECK(find(lint("arm__franka_description_fr3.urdf"), "inertia-invalid", "has no <inertial>"));
+  // A description without any <inertial> is one finding for the file; a moving link without one
+  // in a file that has others is an error; and a non-positive-definite tensor.
+  const FileReport fr3 = lint("arm__franka_description_fr3.urdf");
+  CHECK(count(fr3, "inertia-invalid") == 1);
+  CHECK(find(fr3, "inertia-invalid", "no link of 'fr3' has an <inertial>: a kinematic description"));
+  CHECK(find(lint("humanoid__erd_romeo.urdf"), "inertia-invalid", "moves but"));
   CHECK(find(lint("arm__curobo_franka_panda.urdf"), "inertia-invalid", "has a negative principal moment"));
   // Mimic velocity limits below |multiplier| × the followed joint's limit.
   CHECK(count(lint("humanoid__unitree_h1_with_hand.urdf"), "mimic-max-velocity") == 4);

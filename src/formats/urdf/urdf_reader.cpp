@@ -148,11 +148,27 @@ class UrdfReader {
   // importers skip elements they do not know, so the file is read, and what the element was
   // meant to produce (a material, a sensor, a whole macro's links) is simply absent.
   void report_stray_xacro_elements() {
+    // One finding per element name: an exporter that left a colour macro in every <visual>
+    // left one problem, not thirty.
+    std::vector<std::pair<std::string_view, std::vector<const Element*>>> by_name;
     for (const Element& el : doc_.scan().tags) {
       if (!el.name.starts_with("xacro:")) continue;
+      auto same = std::find_if(by_name.begin(), by_name.end(), [&](const auto& entry) { return entry.first == el.name; });
+      if (same == by_name.end()) by_name.push_back({el.name, {&el}});
+      else same->second.push_back(&el);
+    }
+    for (const auto& [name, elements] : by_name) {
       Diagnostic finding{std::string(rules::kXacroUnexpanded.id), rules::kXacroUnexpanded.default_severity,
-                         element_span(&el),
-                         fmt::format("<{}> left in an expanded URDF; URDF readers skip it", el.name), std::nullopt, {}};
+                         element_span(elements.front()),
+                         fmt::format("<{}> left in an expanded URDF; URDF readers skip it", name), std::nullopt, {}};
+      if (elements.size() > 1) {
+        std::string lines;
+        for (std::size_t i = 1; i < elements.size() && i <= 5; ++i)
+          lines += fmt::format("{}{}", i > 1 ? ", " : "", element_span(elements[i]).line);
+        finding.note(fmt::format("{} more <{}> element{} in the file (line{} {}{}).", elements.size() - 1, name,
+                                 elements.size() == 2 ? "" : "s", elements.size() == 2 ? "" : "s", lines,
+                                 elements.size() > 6 ? ", …" : ""));
+      }
       finding.note("urdfdom, ROS and simulator importers ignore elements they do not know: whatever this xacro "
                    "element would have produced is missing from the robot. The rest of the file is checked.");
       finding.note("Expand the xacro source again, or delete the element if nothing is missing.");
