@@ -79,7 +79,10 @@ class DriveMaxForce final : public Rule {
   void unbounded(const Context& c) const {
     const Drive& drive = *c.joint.drive;
     const Span& span = drive.max_force ? drive.max_force->span : drive.span;
-    Diagnostic& d = c.out.report(span, c.required ? Severity::Warning : Severity::Info,
+    // A drive that moves mimic followers is a gripper's (or a coupled hand's): it closes on
+    // objects, and how hard is the force bound. A test scene's lone drive may mean "unlimited".
+    const bool gripper = !c.asset.mimic_followers(c.joint.name.text).empty();
+    Diagnostic& d = c.out.report(span, c.required || gripper ? Severity::Warning : Severity::Info,
                                  fmt::format("{} has no force bound (maxForce {})", c.label(),
                                              drive.max_force ? "inf" : "unauthored"));
     d.note(drive.max_force ? "maxForce = inf: PhysX never clamps the drive force."
@@ -87,6 +90,15 @@ class DriveMaxForce final : public Rule {
     envelope_note(c, d);
     if (c.required) {
       spec_notes(c, d);
+    } else if (gripper) {
+      const std::size_t followers = c.asset.mimic_followers(c.joint.name.text).size();
+      d.note(fmt::format("It drives a gripper ({} mimic joint{} follow{} it), so consumers disagree: PhysX and Newton's "
+                         "USD importer leave the force unlimited and the fingers squeeze with whatever the position "
+                         "error asks, while NVIDIA's SimReady validation (DJ.001) fails a drive whose maxForce is not "
+                         "authored, finite and positive.",
+                         followers, followers == 1 ? "" : "s", followers == 1 ? "s" : ""));
+      d.note("Author the motor's rated torque (N·m) or force (N) as maxForce; a [gripper] spec in asset-lint.toml "
+             "derives the force the payload needs.");
     } else {
       d.note("Without a [gripper] spec in asset-lint.toml this is reported as an info: a test scene may mean it. "
              "With one, the bound is derived from the payload and judged.");

@@ -46,6 +46,8 @@ std::optional<CopiedFrom> find_copy(const Joint& mimic, const Joint* followed, d
 // compliant mimic's nf / dr repeating a drive gain next to it, a compliance PhysX ignores,
 // and a damping ratio so large that the mimic barely corrects drift (PHYSICS.md §2 item 7).
 class MimicCopiedDriveGains final : public Rule {
+  static constexpr double kFarFactor = 10.0;
+
  public:
   const RuleInfo& info() const override { return info_; }
 
@@ -76,14 +78,22 @@ class MimicCopiedDriveGains final : public Rule {
         continue;
       }
       if (dr->value > max_ratio) {
-        Diagnostic& d = out.report(dr->span, Severity::Info,
-                                   fmt::format("mimic '{}': dampingRatio {} barely corrects position drift",
-                                               joint.name.text, format_number(dr->value, 4)));
-        d.note(fmt::format("PhysX turns the mimic into an implicit spring with kd = 2·nf·dr/r: at dampingRatio {} "
-                           "(above max_damping_ratio {}) the damping term dominates and the drift between '{}' and "
-                           "'{}' is corrected very slowly.",
+        // Past the bound by an order of magnitude the drift outlasts any grasp: the followers
+        // drift apart under load (fingers out of parallel), whatever the value's origin.
+        const bool far = dr->value >= kFarFactor * max_ratio;
+        Diagnostic& d = out.report(dr->span, far ? Severity::Warning : Severity::Info,
+                                   fmt::format("mimic '{}': dampingRatio {} {} position drift", joint.name.text,
+                                               format_number(dr->value, 4), far ? "all but stops correcting" : "barely corrects"));
+        d.note(fmt::format("PhysX turns the mimic into an implicit spring with kp = nf²/r and kd = 2·nf·dr/r: at "
+                           "dampingRatio {} (above max_damping_ratio {}) the damping term dominates and the drift between "
+                           "'{}' and '{}' decays with time constant kd/kp = 2·dr/nf = 2 × {} / {} rad/s = {} s.",
                            format_number(dr->value, 4), format_number(max_ratio), joint.name.text,
-                           joint.mimic->reference.text));
+                           joint.mimic->reference.text, format_number(dr->value, 4), format_number(nf.value, 4),
+                           format_number(2 * dr->value / nf.value, 3)));
+        if (far)
+          d.note(fmt::format("That is {}× or more the bound: under a load the followers drift apart (fingers out of "
+                             "parallel) and stay apart for seconds.",
+                             format_number(kFarFactor)));
         d.note("A hard mimic (naturalFrequency 0) keeps the joints together; the guide starts there.");
       }
     }
@@ -125,7 +135,8 @@ class MimicCopiedDriveGains final : public Rule {
                  Severity::Warning,
                  true,
                  RuleOrigin::Check,
-                 {{"max_damping_ratio", 10.0, "mimic damping ratios above this get an info: drift is barely corrected"}}};
+                 {{"max_damping_ratio", 10.0,
+                   "mimic damping ratios above this get an info (drift is barely corrected), 10× above it a warning"}}};
 };
 
 }  // namespace

@@ -24,9 +24,11 @@ packages=(
 #    (git-ignored): validates the SARIF output;
 #  - physx-js-webidl 2.7.3 (npm, PhysX 5.6.1 compiled to WASM, ~10 MB) into tools/node_modules:
 #    the reference engine tests/physx_reference_test.cpp holds the drive model to (run with
-#    `node`, looked up on PATH).
+#    `node`, looked up on PATH);
+#  - three-usdz-loader 1.0.9 (npm, OpenUSD 22.11 compiled to WASM, ~9 MB) into tools/node_modules:
+#    the reference composition tests/usd_reference_test.cpp holds the USDA reader to.
 # The npm packages are skipped without npm, or with ASSET_LINT_SKIP_OPTIONAL=1.
-npm_tools=(@microsoft/sarif-multitool-linux physx-js-webidl)
+npm_tools=(@microsoft/sarif-multitool-linux physx-js-webidl three-usdz-loader)
 
 # installed_version ROOT NAME: the version of npm package NAME in ROOT/tools/node_modules, or nothing.
 installed_version() {
@@ -86,6 +88,11 @@ install_optional() {
     echo "bootstrap: (optional) installing physx-js-webidl 2.7.3 (PhysX 5.6.1 in WASM) into tools/node_modules"
     npm_install_tool "$root" physx-js-webidl 2.7.3 \
       || echo "bootstrap: warning: physx-js-webidl not installed; the PhysX reference test will be skipped"
+  fi
+  if command -v npm >/dev/null 2>&1 && [ "$(installed_version "$root" three-usdz-loader)" != "1.0.9" ]; then
+    echo "bootstrap: (optional) installing three-usdz-loader 1.0.9 (OpenUSD 22.11 in WASM) into tools/node_modules"
+    npm_install_tool "$root" three-usdz-loader 1.0.9 \
+      || echo "bootstrap: warning: three-usdz-loader not installed; the OpenUSD reference test will be skipped"
   fi
   return 0
 }

@@ -22,8 +22,9 @@ bool physics_prim(const ComposedPrim& prim) {
   if (prim.parent == static_cast<std::size_t>(-1)) return true;
   return std::any_of(prim.api_schemas.begin(), prim.api_schemas.end(), [](const std::string& schema) {
     return schema == "PhysicsRigidBodyAPI" || schema == "PhysicsMassAPI" || schema == "PhysicsArticulationRootAPI" ||
-           schema.starts_with("PhysicsDriveAPI") || schema.starts_with("PhysxJointAPI") ||
-           schema.starts_with("PhysxMimicJointAPI");
+           schema == "NewtonArticulationRootAPI" || schema.starts_with("PhysicsDriveAPI") ||
+           schema.starts_with("PhysxJointAPI") || schema.starts_with("PhysxMimicJointAPI") ||
+           schema == "NewtonMimicAPI" || schema == "NewtonJointAPI" || schema == "MjcJointAPI";
   });
 }
 

@@ -226,10 +226,34 @@ class Reader {
       Diagnostic& d = result_.diagnostics.back();
       d.note(fmt::format("{} {} authored on '{}', but {} {}.", names, attrs.size() == 1 ? "is" : "are", prim.path,
                          schema, deleted ? "is removed by `delete apiSchemas`" : "is not applied"));
+      if (schema == "PhysxJointAPI" && !deleted) unsimulated_joint_values(prim, attrs, d);
       d.note(deleted ? "They record what someone meant before switching the schema off; delete them, or apply the "
                        "schema again if they should act."
                      : "Apply the schema if they should act, or delete them.");
     }
+  }
+
+  // An armature or joint speed limit written without PhysxJointAPI is a value someone chose
+  // for the joint's dynamics (a rotor's inertia, a motor's top speed) that PhysX never gets:
+  // a warning, unless it equals what PhysX uses anyway (armature 0, no speed limit).
+  void unsimulated_joint_values(const ComposedPrim& prim, const std::vector<AttributeOpinion>& attrs, Diagnostic& d) {
+    std::vector<std::string> meant;
+    for (const AttributeOpinion& a : attrs) {
+      const std::string& name = a.attribute->name;
+      if (name != "physxJoint:armature" && name != "physxJoint:maxJointVelocity") continue;
+      auto value = a.attribute->default_value ? a.attribute->default_value->as_double() : std::nullopt;
+      if (!value) continue;
+      const bool armature = name == "physxJoint:armature";
+      if (armature ? *value == 0.0 : !(std::isfinite(*value) && *value < 1e6)) continue;
+      meant.push_back(fmt::format("{} = {}", name, format_number(*value)));
+    }
+    if (meant.empty()) return;
+    d.severity = Severity::Warning;
+    std::string list;
+    for (const std::string& m : meant) list += (list.empty() ? "" : " and ") + m;
+    d.message = fmt::format("PhysxJointAPI on '{}' is not applied: PhysX does not simulate {}", leaf_name(prim.path), list);
+    d.note("PhysX reads a joint's armature and maximum joint velocity from PhysxJointAPI only; without it the joint "
+           "has no armature and no speed limit (omni.physx's unlimited velocity), whatever the file says.");
   }
 
   static std::string_view leaf_name(std::string_view path) {
@@ -448,8 +472,46 @@ class Reader {
       break;
     }
 
+    read_other_engine_joint_values(prim, joint, angular_joint, torque_scale);
     read_mimic(prim, joint);
+    read_newton_mimic(prim, joint);
     result_.asset.joints.push_back(std::move(joint));
+  }
+
+  // What Newton and MuJoCo read where PhysX's schemas leave a value unauthored: Newton's own
+  // NewtonJointAPI armature, then MuJoCo's MjcJointAPI (whose mjc:armature and mjc:damping
+  // Newton's importer still reads). mjc:damping is per radian: MuJoCo states damping in SI
+  // units, unlike UsdPhysics' per-degree drive gains. Stage units apply as to every USD value.
+  void read_other_engine_joint_values(const ComposedPrim& prim, Joint& joint, bool angular, double torque_scale) {
+    auto armature = [&](std::string_view name) {
+      return angular ? number(prim, name, Unit::KilogramMeter2, torque_scale) : number(prim, name, Unit::Kilogram, kpu_);
+    };
+    if (!joint.armature && prim.has_api_schema("NewtonJointAPI")) joint.armature = armature("newton:armature");
+    if (!prim.has_api_schema("MjcJointAPI")) return;
+    if (!joint.armature) joint.armature = armature("mjc:armature");
+    if (!joint.joint_damping)
+      joint.joint_damping = angular ? number(prim, "mjc:damping", Unit::NewtonMeterSecondPerRadian, torque_scale)
+                                    : number(prim, "mjc:damping", Unit::NewtonSecondPerMeter, kpu_);
+  }
+
+  // NewtonMimicAPI (what Isaac Sim's importers write for Newton): joint0 = coef0 + coef1·joint1,
+  // the model's own convention, with coef0 in the follower's position unit (degrees or stage
+  // distance) and coef1 dimensionless. A PhysxMimicJointAPI on the same joint is what PhysX
+  // reads and stays the model's mimic. newton:mimicEnabled = false leaves the joint free.
+  void read_newton_mimic(const ComposedPrim& prim, Joint& joint) {
+    if (joint.mimic || !prim.has_api_schema("NewtonMimicAPI")) return;
+    if (auto enabled = prim.attribute("newton:mimicEnabled"); enabled && enabled->attribute->default_value)
+      if (!enabled->attribute->default_value->as_bool().value_or(true)) return;
+    const bool prismatic = joint.type == JointType::Prismatic;
+    Mimic mimic;
+    mimic.span = prim.schema_span("NewtonMimicAPI");
+    mimic.reference = target(prim, "newton:mimicJoint", mimic.span);
+    auto coef1 = number(prim, "newton:mimicCoef1", Unit::None);
+    mimic.multiplier = coef1 ? *coef1 : Quantity::unauthored(1.0, Unit::None);
+    auto coef0 = prismatic ? number(prim, "newton:mimicCoef0", Unit::Meter, mpu_)
+                           : number(prim, "newton:mimicCoef0", Unit::Degree);
+    mimic.offset = coef0 ? *coef0 : Quantity::unauthored(0.0, prismatic ? Unit::Meter : Unit::Degree);
+    joint.mimic = std::move(mimic);
   }
 
   void read_mimic(const ComposedPrim& prim, Joint& joint) {
@@ -489,6 +551,7 @@ class Reader {
     if (!reference || !is_single_dof(joint.type) || !is_single_dof(reference->type)) return;
     if (is_angular(joint.type) == is_angular(reference->type)) return;
     Quantity& gearing = joint.mimic->multiplier;
+    if (gearing.unit != Unit::UsdGearing) return;  // NewtonMimicAPI: across types it has no unit
     const bool angular_mimic = is_angular(joint.type);
     const Unit unit = angular_mimic ? Unit::UsdGearingDegreePerDistance : Unit::UsdGearingDistancePerDegree;
     const double scale = angular_mimic ? 1.0 / mpu_ : mpu_;
@@ -501,6 +564,7 @@ class Reader {
   // omni.physx refuses a mimic on a revolute joint, or with a revolute reference, that
   // has no finite limits (USD only: Isaac's URDF importer gives URDF mimics limits).
   void check_mimic_limits(const Joint& joint, const Joint* reference) {
+    if (joint.mimic->instance.empty()) return;  // not a PhysxMimicJointAPI: omni.physx does not build it
     auto unlimited_revolute = [](const Joint& j) { return j.type == JointType::Revolute && (!j.lower || !j.upper); };
     const bool own = unlimited_revolute(joint);
     const bool ref = reference && unlimited_revolute(*reference);
