@@ -245,13 +245,13 @@ class Reader {
       if (!value) continue;
       const bool armature = name == "physxJoint:armature";
       if (armature ? *value == 0.0 : !(std::isfinite(*value) && *value < 1e6)) continue;
-      meant.push_back(fmt::format("{} = {}", name, format_number(*value)));
+      meant.push_back(armature ? fmt::format("armature {}", format_number(*value))
+                               : fmt::format("max velocity {}", format_number(*value)));
     }
     if (meant.empty()) return;
     d.severity = Severity::Warning;
-    std::string list;
-    for (const std::string& m : meant) list += (list.empty() ? "" : " and ") + m;
-    d.message = fmt::format("PhysxJointAPI on '{}' is not applied: PhysX does not simulate {}", leaf_name(prim.path), list);
+    d.message = fmt::format("PhysxJointAPI on '{}' is not applied: PhysX ignores its {}", leaf_name(prim.path),
+                            meant.size() == 1 ? meant[0] : meant[0] + " and " + meant[1]);
     d.note("PhysX reads a joint's armature and maximum joint velocity from PhysxJointAPI only; without it the joint "
            "has no armature and no speed limit (omni.physx's unlimited velocity), whatever the file says.");
   }
