@@ -246,7 +246,8 @@ class Reader {
       const bool armature = name == "physxJoint:armature";
       if (armature ? *value == 0.0 : !(std::isfinite(*value) && *value < 1e6)) continue;
       meant.push_back(armature ? fmt::format("armature {}", format_number(*value))
-                               : fmt::format("max velocity {}", format_number(*value)));
+                               : fmt::format("max velocity {}{}", format_number(*value),
+                                             prim.type_name == "PhysicsPrismaticJoint" ? "" : " deg/s"));
     }
     if (meant.empty()) return;
     d.severity = Severity::Warning;
