@@ -254,7 +254,9 @@ class Reader {
     d.message = fmt::format("PhysxJointAPI on '{}' is not applied: PhysX ignores its {}", leaf_name(prim.path),
                             meant.size() == 1 ? meant[0] : meant[0] + " and " + meant[1]);
     d.note("PhysX reads a joint's armature and maximum joint velocity from PhysxJointAPI only; without it the joint "
-           "has no armature and no speed limit (omni.physx's unlimited velocity), whatever the file says.");
+           "has no armature and no speed limit (omni.physx's unlimited velocity), whatever the file says. Newton's "
+           "importer, when told to read PhysX's namespace, takes physxJoint:* by name, applied or not: the joint "
+           "moves differently in the two engines.");
   }
 
   static std::string_view leaf_name(std::string_view path) {
