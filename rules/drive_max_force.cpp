@@ -81,7 +81,7 @@ class DriveMaxForce final : public Rule {
     const Span& span = drive.max_force ? drive.max_force->span : drive.span;
     // A drive that moves mimic followers is a gripper's (or a coupled hand's): it closes on
     // objects, and how hard is the force bound. A test scene's lone drive may mean "unlimited".
-    const bool gripper = !c.asset.mimic_followers(c.joint.name.text).empty();
+    const bool gripper = c.gripper_driver();
     Diagnostic& d = c.out.report(span, c.required || gripper ? Severity::Warning : Severity::Info,
                                  fmt::format("{} has no force bound (maxForce {})", c.label(),
                                              drive.max_force ? "inf" : "unauthored"));
