@@ -51,9 +51,9 @@ TEST_CASE("add-suppressions: USDA gets a # comment before the statement, one per
   write_file(dir.path() / "joints.usda", original);
   const std::string after = add_twice(dir.path(), "joints.usda", "stale-schema-attribute",
                                       "asset-lint: added 2 suppression comments to joints.usda\n");
-  std::string expected = replace_once(original, "        float physxJoint:maxJointVelocity",
+  std::string expected = replace_once(original, "        float physxJoint:jointFriction",
                                   "        # asset-lint: ignore[stale-schema-attribute]\n"
-                                  "        float physxJoint:maxJointVelocity");
+                                  "        float physxJoint:jointFriction");
   expected = replace_once(expected, "        float drive:angular:physics:damping = 5000",
                       "        # asset-lint: ignore[stale-schema-attribute]\n"
                       "        float drive:angular:physics:damping = 5000");

@@ -35,7 +35,7 @@ const char* kBaseline = R"({
     {
       "path": "joints.usda",
       "element": "/gripper/driven",
-      "attribute": "physxJoint:maxJointVelocity",
+      "attribute": "physxJoint:jointFriction",
       "rule": "stale-schema-attribute",
       "count": 1
     },
@@ -90,9 +90,9 @@ TEST_CASE("baseline: unrelated edits keep the keys (URDF and USDA); new findings
   std::string usda = read_file(dir.path() / "joints.usda");
   usda = replace_once(usda, "    def PhysicsRevoluteJoint \"driven\"", "    def Xform \"extra\"\n    {\n    }\n\n"
                                                                       "    def PhysicsRevoluteJoint \"driven\"");
-  usda = replace_once(usda, "        float physxJoint:maxJointVelocity = 166.16\n", "");
+  usda = replace_once(usda, "        float physxJoint:jointFriction = 0.05\n", "");
   usda = replace_once(usda, "        float physics:lowerLimit = 0\n",
-                      "        float physxJoint:maxJointVelocity = 166.16\n        float physics:lowerLimit = 0\n");
+                      "        float physxJoint:jointFriction = 0.05\n        float physics:lowerLimit = 0\n");
   write_file(dir.path() / "joints.usda", usda);
   auto r = run_cli({"--select", kSelect, "--output-format", "concise", "--baseline", "asset-lint-baseline.json"},
                    dir.path());
