@@ -261,3 +261,35 @@ TEST_CASE("compose: internal reference and payload chains compose through every 
     for (const char* prim : {"/A", "/B", "/C", "/D"}) CHECK(number(s, prim, "d") == 4);
   }
 }
+
+TEST_CASE("compose: the selected variant's opinions are weaker than the prim's, stronger than its references",
+          "[usd][compose]") {
+  MemoryFileSystem fs({{"robot.usda", "#usda 1.0\n(\n defaultPrim = \"R\"\n)\n"
+                                      "def Xform \"R\" (\n variants = {\n string Physics = \"physx\"\n }\n"
+                                      " prepend variantSets = \"Physics\"\n)\n{\n float x = 1\n\n"
+                                      " variantSet \"Physics\" = {\n"
+                                      "  \"none\" {\n  }\n"
+                                      "  \"physx\" (\n prepend apiSchemas = [\"PhysicsArticulationRootAPI\"]\n"
+                                      "   references = @physics.usda@\n  ) {\n"
+                                      "   float x = 2\n   float y = 2\n"
+                                      "   def PhysicsRevoluteJoint \"J\"\n   {\n   }\n  }\n }\n}\n"},
+                       {"physics.usda", "#usda 1.0\n(\n defaultPrim = \"P\"\n)\n"
+                                        "def Xform \"P\"\n{\n float y = 3\n float z = 3\n}\n"},
+                       {"scene.usda", "#usda 1.0\n"
+                                      "def Xform \"S\" (\n references = @robot.usda@\n"
+                                      " variants = {\n string Physics = \"none\"\n }\n)\n{\n}\n"}});
+  Stage s = compose(fs, "robot.usda");
+  REQUIRE(s.usable);
+  CHECK(number(s, "/R", "x") == 1);  // the prim's own opinion beats its variant's
+  CHECK(number(s, "/R", "y") == 2);  // the variant beats the reference it brings in
+  CHECK(number(s, "/R", "z") == 3);  // which still contributes
+  CHECK(s.find("/R")->has_api_schema("PhysicsArticulationRootAPI"));
+  REQUIRE(s.find("/R/J") != nullptr);
+  CHECK(s.find("/R/J")->defined);
+
+  // A referencing layer's selection is stronger than the referenced asset's own.
+  Stage scene = compose(fs, "scene.usda");
+  CHECK(scene.find("/S/J") == nullptr);
+  CHECK_FALSE(scene.find("/S")->has_api_schema("PhysicsArticulationRootAPI"));
+  CHECK(number(scene, "/S", "x") == 1);
+}

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <unordered_set>
 
@@ -79,6 +80,9 @@ std::string map_path(std::string_view authored, const SpecRef& spec) {
     return spec.target_root + std::string(authored.substr(root.size()));
   return std::string(authored);
 }
+
+// Variant set name -> selected variant name.
+using Selections = std::map<std::string, std::string, std::less<>>;
 
 struct Arc {
   CompositionArc arc;
@@ -248,8 +252,39 @@ class Composer {
     return all;
   }
 
-  // Appends the specs that the arcs of specs[0..] bring in, strongest first (recursively).
-  void expand(std::vector<SpecRef>& specs, const std::string& path, std::vector<const Prim*>& active) {
+  // The variant selections (`variants = { string set = "name" }`) of specs[0..count), strongest
+  // first; selections already made by stronger (referencing) prims win.
+  static void add_selections(const std::vector<SpecRef>& specs, std::size_t count, Selections& selections) {
+    for (std::size_t i = 0; i < count; ++i)
+      for (const Metadata& m : specs[i].prim->metadata) {
+        if (m.key != "variants") continue;
+        for (const DictEntry& e : m.value.entries)
+          if (auto name = e.value.as_string()) selections.try_emplace(e.key, std::string(*name));
+      }
+  }
+
+  // Appends the selected variant of every variant set specs[0..count) define: in USD's strength
+  // order a variant is weaker than its layer stack's own opinions and stronger than the
+  // references and payloads (which the variant may itself author).
+  static void add_variants(std::vector<SpecRef>& specs, std::size_t count, const Selections& selections) {
+    for (std::size_t i = 0; i < count; ++i)
+      for (const VariantSet& set : specs[i].prim->variant_sets) {
+        auto selected = selections.find(set.name);
+        if (selected == selections.end()) continue;
+        if (const Variant* variant = set.find_variant(selected->second)) {
+          SpecRef spec = specs[i];
+          spec.prim = &variant->body;
+          specs.push_back(std::move(spec));
+        }
+      }
+  }
+
+  // Appends the selected variants of specs[0..] and the specs that their arcs bring in,
+  // strongest first (recursively).
+  void expand(std::vector<SpecRef>& specs, const std::string& path, std::vector<const Prim*>& active,
+              Selections selections = {}) {
+    add_selections(specs, specs.size(), selections);
+    add_variants(specs, specs.size(), selections);
     const std::size_t count = specs.size();
     const std::vector<Arc> arcs = arcs_of(specs, count);
     std::vector<SpecRef> added;
@@ -300,7 +335,7 @@ class Composer {
       }
       const std::size_t before = active.size();
       for (const SpecRef& t : targets) active.push_back(t.prim);
-      expand(targets, path, active);  // appends the targets' own arcs to `targets`
+      expand(targets, path, active, selections);  // appends the targets' variants and arcs to `targets`
       active.resize(before);
       added.insert(added.end(), targets.begin(), targets.end());
     }
