@@ -13,49 +13,87 @@
 namespace assetlint::rules {
 namespace {
 
-// The guide's armature section: armature an order of magnitude above the lighter link's
-// inertia needs a motor datasheet behind it, armature = G²·I_rotor. How risky such an
-// armature is depends on what the asset says about the motor (docs/rules/armature-excessive.md):
-//   - a declared motor that reflects it: justified, silent;
-//   - a passive joint (MJCF: no actuator reaches it): no rotor to reflect, a warning;
-//   - a declared gear G: the implied rotor armature/G² against the link, info or warning;
-//   - otherwise: a warning when the drive would fail drive-natural-frequency without the
-//     armature (the tuning lever the guide warns about), else info.
+// Armature on an actuated joint is the motor's rotor reflected through its gearbox, G²·I_rotor
+// (docs/rules/armature-excessive.md). The guide asks for a datasheet when it is an order of
+// magnitude above the lighter link; on anything but a mimic-coupled gripper the joint moves
+// its whole distal subtree, so the comparison is with that (Mᵢᵢ without the armature). It is
+// reported when above `max_ratio` of what the joint moves, and escalated to a warning only when
+//   - the drive would be unstable without it (PhysX's bound h·nf ≤ 1, MuJoCo's step map: the
+//     shared judged inertia of drive_support.h less the armature): the tuning lever the guide
+//     warns about;
+//   - it dwarfs everything the joint moves (above `flywheel_ratio`): a flywheel, not a rotor;
+//   - a declared motor reflects less, or no actuator reaches the joint (no rotor to reflect).
+// Otherwise it is an info: an ordinary gearmotor's reflected inertia.
 class ArmatureExcessive final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double factor = rule_option(info_, settings, "max_ratio");
+    const double flywheel = rule_option(info_, settings, "flywheel_ratio");
     const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || !joint.armature || joint.armature->value <= 0) continue;
-      const physics::EffectiveInertia inertia = physics::effective_inertia(model.articulation(), asset, joint);
-      if (!inertia.known || inertia.link_inertia <= 0) continue;
       const double armature = joint.armature->value;
-      const double ratio = armature / inertia.link_inertia;
+      const physics::EffectiveInertia lighter = physics::effective_inertia(model.articulation(), asset, joint);
+      const Moved moved = what_it_moves(model, asset, settings, joint, lighter, armature);
+      if (!moved.known) continue;
+      const double ratio = armature / moved.value;
       if (ratio <= factor) continue;
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
-      Candidate c{joint, inertia, armature, ratio, factor, model.spring_drive(joint)};
+      Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, model.spring_drive(joint)};
       report(c, out);
     }
   }
 
  private:
+  // What the armature is compared with.
+  struct Moved {
+    bool known = false;
+    double value = 0;     // kg·m² (kg), without the armature
+    bool lighter = true;  // the guide's lighter link; else everything the joint moves (Mᵢᵢ − armature)
+    bool stand_in = false;  // the lighter link standing in for an unknown Mᵢᵢ: a lower bound
+    std::string name() const { return lighter ? "the lighter link" : "what it moves"; }
+  };
+
+  static Moved what_it_moves(const DriveModel& model, const Asset& asset, const Settings& settings, const Joint& joint,
+                             const physics::EffectiveInertia& lighter, double armature) {
+    Moved moved;
+    const bool guide = asset.format != SourceFormat::Mjcf && guide_applies(asset, settings, joint);
+    if (!guide) {
+      const physics::ArticulatedInertia diagonal = model.articulation().joint_space_inertia(joint);
+      if (diagonal.known && diagonal.value - armature > 0) {
+        moved.known = true;
+        moved.value = diagonal.value - armature;
+        moved.lighter = false;
+        return moved;
+      }
+      moved.stand_in = true;
+    }
+    if (lighter.known && lighter.link_inertia > 0) {
+      moved.known = true;
+      moved.value = lighter.link_inertia;
+    }
+    return moved;
+  }
+
   struct Candidate {
     const Joint& joint;
-    const physics::EffectiveInertia& inertia;
+    const physics::EffectiveInertia& lighter;
+    Moved moved;
     double armature;
     double ratio;
     double factor;
+    double flywheel;
     std::optional<DrivenJoint> driven;
     const char* unit() const { return is_angular(joint.type) ? "kg·m²" : "kg"; }
+    // Far above everything the joint moves: the drive turns a flywheel.
+    bool dwarfs() const { return !moved.lighter && ratio > flywheel; }
   };
 
   struct Crutch {
     double natural_frequency;  // rad/s, without the armature
-    double inertia;            // what it was computed on
-    bool articulated;          // on the articulation's inertia, else the lighter link's
+    double inertia;            // the judged inertia less the armature
   };
 
   static double reflected(const Motor& motor) { return motor.gear_ratio * motor.gear_ratio * motor.rotor_inertia.value; }
@@ -65,12 +103,13 @@ class ArmatureExcessive final : public Rule {
     const Span at = joint.armature->span.valid() ? joint.armature->span : joint.name.span;
     const std::string amount = fmt::format("{} {}", format_number(c.armature, 3), c.unit());
     const std::string times = format_number(c.ratio, 3);
+    const std::string against = c.moved.name();
 
     if (joint.motor) {
       Diagnostic& d = out.report(at, Severity::Warning,
-                                 fmt::format("armature {} of {} ({}× the lighter link) is more than its declared motor "
-                                             "reflects", amount, short_name(joint), times));
-      d.note(link_text(c));
+                                 fmt::format("armature {} of {} ({}× {}) is more than its declared motor reflects",
+                                             amount, short_name(joint), times, against));
+      d.note(moved_text(c));
       d.note(fmt::format("The declared motor ({}: G = {}, I_rotor = {} kg·m²) reflects only G²·I_rotor = {} kg·m².",
                          joint.motor->origin, format_number(joint.motor->gear_ratio),
                          format_number(joint.motor->rotor_inertia.value, 3), format_number(reflected(*joint.motor), 3)));
@@ -79,110 +118,143 @@ class ArmatureExcessive final : public Rule {
     }
     if (joint.actuation == Actuation::Passive) {
       Diagnostic& d = out.report(at, Severity::Warning,
-                                 fmt::format("armature {} of {} ({}× the lighter link) on a joint no actuator moves", amount,
-                                             short_name(joint), times));
-      d.note(link_text(c));
+                                 fmt::format("armature {} of {} ({}× {}) on a joint no actuator moves", amount,
+                                             short_name(joint), times, against));
+      d.note(moved_text(c));
       d.note("No actuator reaches this joint, directly or through a fixed tendon, so no motor's rotor is reflected onto "
              "it: the armature is inertia the real mechanism does not have, and it slows every motion the linkage "
              "makes. If it only steadies a closed chain, keep it as small as does that.");
       drive_effect(c, d);
       return;
     }
-    if (joint.transmission) {
-      const double gear = joint.transmission->ratio;
-      const double rotor = c.armature / (gear * gear);
-      const double rotor_ratio = rotor / c.inertia.link_inertia;
-      const bool plausible = rotor_ratio <= c.factor;
-      Diagnostic& d = out.report(
-          at, plausible ? Severity::Info : Severity::Warning,
-          fmt::format("armature {} of {} ({}× the lighter link) is {} its gear {}", amount, short_name(joint), times,
-                      plausible ? "consistent with" : "too large even behind", format_number(gear)));
-      d.note(joint.transmission->span,
-             fmt::format("The actuator's gear G = {} implies a rotor of armature / G² = {} kg·m², {}× the lighter "
-                         "link's inertia ({} {}; threshold {}×).",
-                         format_number(gear), format_number(rotor, 3), format_number(rotor_ratio, 3),
-                         format_number(c.inertia.link_inertia, 3), c.unit(), format_number(c.factor)));
-      d.note(plausible ? "The guide's test, armature = G²·I_rotor, holds for a rotor of that size: confirm it against "
-                         "the motor datasheet."
-                       : fmt::format("A rotor of more than {}× the inertia of the link it turns fails the guide's "
-                                     "test: the armature adds inertia the robot does not have.",
-                                     format_number(c.factor)));
-      drive_effect(c, d);
-      return;
-    }
     if (const auto without = crutch(c)) {
-      Diagnostic& d = out.report(at, Severity::Warning,
-                                 fmt::format("armature {} of {} ({}× the lighter link) is what keeps its drive within the "
-                                             "{} bound", amount, short_name(joint), times,
-                                             physics::solver_name(c.driven->rate.solver)));
-      d.note(link_text(c));
-      d.note(fmt::format("Without the armature the drive's natural frequency would be sqrt({} {} / {} {}) = {} rad/s "
-                         "on {}, above the bound {} rad/s ({}): the armature is the tuning lever the guide describes, "
-                         "and it changes the robot unless a motor datasheet backs it.",
-                         format_number(c.driven->stiffness, 4), unit_symbol(stiffness_unit(joint)),
-                         format_number(without->inertia, 3), c.unit(),
-                         format_number(without->natural_frequency, 4),
-                         without->articulated ? "the articulation's own inertia" : "the lighter link",
-                         format_number(c.driven->rate.frequency_bound(), 4), c.driven->rate.step_text()));
       const physics::SimulationRate& rate = c.driven->rate;
+      Diagnostic& d = out.report(at, Severity::Warning,
+                                 fmt::format("armature {} of {} ({}× {}) is what keeps its drive {}", amount,
+                                             short_name(joint), times, against,
+                                             rate.solver == physics::Solver::MuJoCo
+                                                 ? fmt::format("stable under {}", physics::integrator_name(rate.integrator))
+                                                 : fmt::format("within the {} bound", physics::solver_name(rate.solver))));
+      d.note(moved_text(c));
+      d.note(fmt::format("Without the armature the drive's natural frequency would be sqrt({} {} / {} {}) = {} rad/s "
+                         "on {} less the armature, above the bound {} rad/s ({}){}: the armature is the tuning lever "
+                         "the guide describes, and it changes the robot unless a motor datasheet backs it.",
+                         format_number(c.driven->stiffness, 4), unit_symbol(stiffness_unit(joint)),
+                         format_number(without->inertia, 3), c.unit(), format_number(without->natural_frequency, 4),
+                         c.driven->judged.label(), format_number(rate.frequency_bound(), 4), rate.step_text(),
+                         rate.solver == physics::Solver::MuJoCo
+                             ? fmt::format(", and {}'s step would not damp it", physics::integrator_name(rate.integrator))
+                             : std::string()));
       if (rate.solver == physics::Solver::MuJoCo && rate.integrator != physics::MujocoIntegrator::ImplicitFast &&
-          physics::damps_stably(physics::MujocoIntegrator::ImplicitFast, rate.h(),
-                                mujoco_servo(*c.driven, without->inertia)))
+          rate.integrator != physics::MujocoIntegrator::Implicit &&
+          physics::step_verdict(physics::MujocoIntegrator::ImplicitFast, rate.h(),
+                                mujoco_servo(*c.driven, without->inertia)) == physics::StepVerdict::Decays)
         d.note("Under <option integrator=\"implicitfast\">, which takes the actuator's kv implicitly, the drive would be "
                "damped stably without the armature.");
       drive_effect(c, d);
       return;
     }
+    if (c.dwarfs()) {
+      Diagnostic& d = out.report(at, Severity::Warning,
+                                 fmt::format("armature {} of {} is {}× everything the joint moves: a flywheel, not a rotor",
+                                             amount, short_name(joint), times));
+      d.note(moved_text(c));
+      d.note(fmt::format("A geared motor's rotor reflects as G²·I_rotor, typically comparable to the load it drives; "
+                         "above {}× the joint moves as if the flywheel were the robot, and every motion it makes is "
+                         "that much slower to start and stop.",
+                         format_number(c.flywheel)));
+      drive_effect(c, d);
+      return;
+    }
+    if (joint.transmission) {
+      const double gear = joint.transmission->ratio;
+      const double rotor = c.armature / (gear * gear);
+      const double rotor_ratio = rotor / c.moved.value;
+      const bool plausible = rotor_ratio <= c.factor;
+      Diagnostic& d = out.report(
+          at, Severity::Info,
+          fmt::format("armature {} of {} ({}× {}) is {} its gear {}", amount, short_name(joint), times, against,
+                      plausible ? "consistent with" : "large even behind", format_number(gear)));
+      d.note(joint.transmission->span,
+             fmt::format("The actuator's gear G = {} implies a rotor of armature / G² = {} kg·m², {}× {} ({} {}; "
+                         "threshold {}×).",
+                         format_number(gear), format_number(rotor, 3), format_number(rotor_ratio, 3), against,
+                         format_number(c.moved.value, 3), c.unit(), format_number(c.factor)));
+      d.note(plausible ? "The guide's test, armature = G²·I_rotor, holds for a rotor of that size: confirm it against "
+                         "the motor datasheet."
+                       : "A rotor heavier than what it turns is unusual: confirm it against the motor datasheet. The "
+                         "drive does not depend on it for stability, so it only changes how quickly the joint moves.");
+      drive_effect(c, d);
+      return;
+    }
     Diagnostic& d = out.report(at, Severity::Info,
-                               fmt::format("armature {} of {} is {}× the lighter link's inertia (threshold {}×)", amount,
-                                           short_name(joint), times, format_number(c.factor)));
-    d.note(link_text(c));
-    d.note(c.driven ? "Its drive would be steady without it (within the natural-frequency bound, or damped stably by "
-                      "MuJoCo's integrator), so it models a motor rather than steadying the drive; declare the motor to "
-                      "record that."
+                               fmt::format("armature {} of {} is {}× {} (threshold {}×)", amount, short_name(joint),
+                                           times, c.moved.lighter ? "the lighter link's inertia" : "what the joint moves",
+                                           format_number(c.factor)));
+    d.note(moved_text(c));
+    d.note(c.driven ? "Its drive would be steady without it (within the natural-frequency bound, or damped by MuJoCo's "
+                      "integrator), so it models a motor rather than steadying the drive; declare the motor to record "
+                      "that."
                     : "No spring drive depends on it, so it models a motor rather than steadying a drive; declare the "
                       "motor to record that.");
+    if (c.driven && c.driven->rate.solver == physics::Solver::MuJoCo && !c.driven->damping_known())
+      d.note(fmt::format("Whether the drive needs it to stay stable was not judged: {}.", c.driven->drive->damping_unknown));
     drive_effect(c, d);
   }
 
-  // The natural frequency the drive would have without its armature, when that fails the
-  // bound drive-natural-frequency uses: the armature is what keeps the drive stable.
-  // On the articulation's own inertia when known (what the solver's drive row sees; the
-  // armature adds to it one for one), else on the guide's lighter link.
+  // The natural frequency the drive would have without its armature, when the drive would then
+  // fail: past PhysX's bound, or (MuJoCo) with a step map that does not decay. On the judged
+  // inertia less the armature (drive_support.h; the armature adds to Mᵢᵢ and to 1/r one for one).
   static std::optional<Crutch> crutch(const Candidate& c) {
-    if (!c.driven || c.driven->acceleration()) return std::nullopt;
-    const bool articulated = c.driven->articulated.known && c.driven->articulated.value > c.armature;
-    const double inertia = articulated ? c.driven->articulated.value - c.armature : c.inertia.link_inertia;
+    if (!c.driven || c.driven->acceleration() || !c.driven->judged.known) return std::nullopt;
+    const double inertia = c.driven->judged.value - c.armature;
+    if (!(inertia > 0)) return std::nullopt;
     const double without = physics::natural_frequency(c.driven->stiffness, inertia);
-    if (without <= c.driven->rate.frequency_bound()) return std::nullopt;
-    // Past the bound, MuJoCo's integrator may still damp it stably without the armature.
     const physics::SimulationRate& rate = c.driven->rate;
-    if (rate.solver == physics::Solver::MuJoCo &&
-        physics::damps_stably(rate.integrator, rate.h(), mujoco_servo(*c.driven, inertia)))
-      return std::nullopt;
-    return Crutch{without, inertia, articulated};
+    if (without <= rate.frequency_bound()) return std::nullopt;
+    if (rate.solver == physics::Solver::MuJoCo) {
+      if (!c.driven->damping_known()) return std::nullopt;  // the step's verdict needs the damping
+      if (physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*c.driven, inertia)) == physics::StepVerdict::Decays)
+        return std::nullopt;
+    }
+    return Crutch{without, inertia};
   }
 
-  static std::string link_text(const Candidate& c) {
+  static std::string moved_text(const Candidate& c) {
     const Joint& joint = c.joint;
-    const double gearing = c.inertia.gearing;
-    return fmt::format("For {}, the lighter link '{}' about '{}' has {} {}{} (threshold {}×); the guide's test is "
-                       "armature = G²·I_rotor: this equals a rotor as heavy as that link behind a {}:1 gearbox.",
-                       joint_label(joint), c.inertia.link->name.text, c.inertia.via->name.text,
-                       format_number(c.inertia.link_inertia, 3), c.unit(),
-                       std::abs(gearing) != 1.0 ? fmt::format(" (reflected with gearing² {})", format_number(gearing * gearing, 3))
-                                                : std::string(),
-                       format_number(c.factor), format_number(std::sqrt(c.ratio), 3));
+    if (c.moved.lighter) {
+      const double gearing = c.lighter.gearing;
+      return fmt::format("For {}, the lighter link '{}' about '{}' has {} {}{} (threshold {}×{}); the guide's test is "
+                         "armature = G²·I_rotor: this equals a rotor as heavy as that link behind a {}:1 gearbox.",
+                         joint_label(joint), c.lighter.link->name.text, c.lighter.via->name.text,
+                         format_number(c.lighter.link_inertia, 3), c.unit(),
+                         std::abs(gearing) != 1.0
+                             ? fmt::format(" (reflected with gearing² {})", format_number(gearing * gearing, 3))
+                             : std::string(),
+                         format_number(c.factor),
+                         c.moved.stand_in ? "; what the whole joint moves is unknown, so the lighter link stands in: "
+                                            "the ratio is an upper bound"
+                                          : "",
+                         format_number(std::sqrt(c.ratio), 3));
+    }
+    return fmt::format("For {}, everything the joint moves has {} {} about its axis (Mᵢᵢ with every other joint held, "
+                       "without the armature; threshold {}×); armature = G²·I_rotor: this equals a rotor as heavy as "
+                       "that load behind a {}:1 gearbox.",
+                       joint_label(joint), format_number(c.moved.value, 3), c.unit(), format_number(c.factor),
+                       format_number(std::sqrt(c.ratio), 3));
   }
 
   static void drive_effect(const Candidate& c, Diagnostic& d) {
-    if (!c.driven || c.driven->acceleration()) return;
+    if (!c.driven || c.driven->acceleration() || !c.driven->judged.known) return;
     const DrivenJoint& driven = *c.driven;
-    const double k = driven.stiffness;
-    std::string effect = fmt::format("It lowers the drive's natural frequency on the lighter link from {} to {} rad/s",
-                                     format_number(physics::natural_frequency(k, c.inertia.link_inertia), 3),
-                                     format_number(physics::natural_frequency(k, c.inertia.value), 3));
-    if (driven.articulated.known)
+    const double k = driven.stiffness, with = driven.judged.value, without = with - c.armature;
+    std::string effect =
+        without > 0 ? fmt::format("It lowers the drive's natural frequency on {} from {} to {} rad/s",
+                                  driven.judged.label(), format_number(physics::natural_frequency(k, without), 3),
+                                  format_number(physics::natural_frequency(k, with), 3))
+                    : fmt::format("The drive's natural frequency on {} is {} rad/s", driven.judged.label(),
+                                  format_number(physics::natural_frequency(k, with), 3));
+    if (driven.articulated.known && driven.rate.solver != physics::Solver::MuJoCo)
       effect += fmt::format("; with it the drive row's x on the articulation is {} ({})",
                             format_number(driven.row(driven.articulated.value).x(), 3), driven.rate.step_text());
     d.note(effect + fmt::format(". Inertias: {}.", driven.inertias_text()));
@@ -190,11 +262,16 @@ class ArmatureExcessive final : public Rule {
 
  private:
   RuleInfo info_{"armature-excessive",
-                 "Joint armature an order of magnitude above the lighter link's inertia about the axis",
+                 "Joint armature an order of magnitude above what the joint moves (the lighter link, for a mimic-coupled "
+                 "gripper)",
                  Severity::Warning,
                  false,
                  RuleOrigin::Check,
-                 {{"max_ratio", 10.0, "report armature above this multiple of the lighter link's inertia about the axis"}}};
+                 {{"max_ratio", 10.0,
+                   "report armature above this multiple of what the joint moves about its axis (the lighter link for a "
+                   "mimic-coupled gripper drive)"},
+                  {"flywheel_ratio", 100.0,
+                   "warn when the armature is above this multiple of everything the joint moves (a flywheel)"}}};
 };
 
 }  // namespace

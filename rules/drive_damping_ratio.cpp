@@ -10,7 +10,8 @@ namespace assetlint::rules {
 namespace {
 
 // PHYSICS.md §2: dr = d / (2·sqrt(k·I)); 1 is critical damping, the guide's starting
-// point. Far below it the joint rings; far above it the joint crawls.
+// point. Far below it the joint rings; far above it the joint crawls. I is the drive's judged
+// inertia (drive_support.h), the same one drive-natural-frequency uses.
 class DriveDampingRatio final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
@@ -21,28 +22,23 @@ class DriveDampingRatio final : public Rule {
     const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
       auto driven = model.spring_drive(joint);
-      if (!driven || (!driven->acceleration() && !driven->inertia.known)) continue;
+      // Unknown damping (MJCF dampratio the reader does not convert): no ratio to judge; the
+      // reader's finding says why. Unknown inertia: drive-natural-frequency says so.
+      if (!driven || !driven->damping_known() || !driven->judged.known) continue;
       const double inertia = driven->inertia_used;
       const double ratio = physics::damping_ratio(driven->damping, driven->stiffness, inertia);
       if (ratio >= low && ratio <= high) continue;
       const Drive& drive = *driven->drive;
       const double critical = physics::damping_for_ratio(1.0, driven->stiffness, inertia);
       const bool below = ratio < low;
-      // The guide's lighter link is the least the joint can move; on an arm's proximal joint
-      // the articulation moves far more. "Sluggish" only on the lighter link, and within the
-      // range on what the solver's row sees, is not a verdict to act on: info.
-      const bool on_articulation = driven->articulated.known;
-      const double articulated_ratio =
-          on_articulation ? physics::damping_ratio(driven->damping, driven->stiffness, driven->articulated.value) : 0.0;
-      const bool articulation_disagrees = !below && !driven->acceleration() && on_articulation && articulated_ratio <= high;
       // Past MuJoCo's 1/timestep a stiff servo steps steadily only because its damping is high
       // and implicit (drive-natural-frequency): critical damping would undo that.
       const physics::SimulationRate& rate = driven->rate;
       const bool steadies_stiff_spring =
           !below && !driven->acceleration() && rate.solver == physics::Solver::MuJoCo &&
           rate.h() * physics::natural_frequency(driven->stiffness, inertia) > 1 &&
-          physics::damps_stably(rate.integrator, rate.h(), mujoco_servo(*driven, inertia));
-      const bool info_only = articulation_disagrees || steadies_stiff_spring;
+          physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*driven, inertia)) == physics::StepVerdict::Decays;
+      const bool info_only = steadies_stiff_spring;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
@@ -51,21 +47,11 @@ class DriveDampingRatio final : public Rule {
                                                  format_number(ratio, 3), below ? "below" : "above",
                                                  format_number(below ? low : high),
                                                  below ? "oscillates around its target" : "moves sluggishly"));
-      d.note(fmt::format("For {}: dr = d / (2·sqrt(k·I)) = {} / (2·sqrt({} × {})) = {} with the guide's {}.",
+      d.note(fmt::format("For {}: dr = d / (2·sqrt(k·I)) = {} / (2·sqrt({} × {})) = {} with {}.",
                          joint_label(joint), describe_gain(drive.damping, driven->damping, damping_unit(joint)),
                          describe_gain(drive.stiffness, driven->stiffness, stiffness_unit(joint)),
                          format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
-      if (!driven->acceleration()) {
-        std::string both = fmt::format("Inertias: {}.", driven->inertias_text());
-        if (on_articulation)
-          both += fmt::format(" On the articulation dr = {}{}.", format_number(articulated_ratio, 3),
-                              articulation_disagrees
-                                  ? fmt::format(", within {}: the joint moves more than the lighter link, so the "
-                                                "verdict is an info",
-                                                format_number(high))
-                                  : "");
-        d.note(std::move(both));
-      }
+      if (!driven->acceleration()) d.note(fmt::format("Inertias: {}.", driven->inertias_text()));
       if (steadies_stiff_spring) {
         const physics::Servo servo = mujoco_servo(*driven, inertia);
         d.note(fmt::format(

@@ -14,11 +14,14 @@
 namespace assetlint::rules {
 namespace {
 
-// The guide's check (docs/physics.md "The step h"): nf = sqrt(k / I) on the guide's
-// lighter-link I against rate × position iterations, which under TGS is exactly h·nf ≤ 1
-// (PhysX solves the drive at the sub-step h = dt/N); under PGS the row is built with the
-// whole frame, so the bound is the rate. Above the bound: an error. Above the rate but
-// within it: the guide's "worth trying", an info with the numbers.
+// The guide's check (docs/physics.md "The step h"): nf = sqrt(k / I) against rate × position
+// iterations, which under TGS is exactly h·nf ≤ 1 (PhysX solves the drive at the sub-step
+// h = dt/N); under PGS the row is built with the whole frame, so the bound is the rate. I is
+// the drive's judged inertia (drive_support.h): the guide's lighter link for a mimic-coupled
+// gripper, the articulation for any other PhysX drive, M₀ᵢᵢ for MuJoCo. Above the bound: an
+// error. Above the rate but within it: the guide's "worth trying", an info with the numbers.
+// MuJoCo has no such bound: its integrator's step map decides (physics/servo_step.h), and
+// only a growing or undamped mode is an error.
 class DriveNaturalFrequency final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
@@ -30,12 +33,17 @@ class DriveNaturalFrequency final : public Rule {
       if (!driven) continue;
       const Drive& drive = *driven->drive;
       const Span at = drive.stiffness->span.valid() ? drive.stiffness->span : joint.name.span;
-      if (!driven->acceleration() && !driven->inertia.known) {
+      if (!driven->judged.known) {
         Diagnostic& d = out.report(at, Severity::Info,
                                    fmt::format("drive of {}: natural frequency not checked, no link mass", short_name(joint)));
-        d.note(fmt::format("No moving link of it or its mimics authors mass, inertia and centre of mass ({}); PhysX "
-                           "derives them from colliders, which a text linter cannot read.",
-                           name_list(driven->inertia.unknown_links)));
+        if (driven->judged.basis == InertiaBasis::JointSpace)
+          d.note(fmt::format("M₀ᵢᵢ, the inertia MuJoCo's step divides by, needs every body the joint moves: {}; MuJoCo "
+                             "derives missing masses from geoms, which a text linter does not.",
+                             driven->judged.why_unknown()));
+        else
+          d.note(fmt::format("No moving link of it or its mimics authors mass, inertia and centre of mass ({}); PhysX "
+                             "derives them from colliders, which a text linter cannot read.",
+                             name_list(driven->inertia.unknown_links)));
         continue;
       }
       check_drive(*driven, settings, at, out);
@@ -67,8 +75,21 @@ class DriveNaturalFrequency final : public Rule {
       return;
     }
 
-    const std::optional<MujocoStep> mujoco = mujoco_verdict(driven);
-    if (mujoco && mujoco->damps_stably()) {
+    const std::optional<MujocoStep> mujoco = mujoco_step(driven);
+    if (mujoco && !driven.damping_known()) {
+      // Whether the step decays depends on the damping: no verdict without it.
+      Diagnostic& d = out.report(
+          at, Severity::Info,
+          fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, stability not judged: damping "
+                      "unknown",
+                      short_name(joint), format_number(nf, 4), format_number(bound, 4)));
+      d.note(derivation(driven, nf));
+      d.note(bound_text(rate, h_nf));
+      d.note(fmt::format("Whether {} damps the spring's unresolved mode depends on the damping, and {}.",
+                         physics::integrator_name(rate.integrator), driven.drive->damping_unknown));
+      return;
+    }
+    if (mujoco && mujoco->verdict() == physics::StepVerdict::Decays) {
       Diagnostic& d = out.report(
           at, Severity::Info,
           fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, damped stably by {}",
@@ -82,9 +103,13 @@ class DriveNaturalFrequency final : public Rule {
 
     Diagnostic& d = out.report(
         at, Severity::Error,
-        fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
-                    format_number(nf, 4), physics::solver_name(rate.solver), format_number(bound, 4),
-                    format_number(h_nf, 3)));
+        mujoco ? fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s (h·nf = {}), and {}'s step {}",
+                             short_name(joint), format_number(nf, 4), format_number(bound, 4), format_number(h_nf, 3),
+                             physics::integrator_name(rate.integrator),
+                             mujoco->verdict() == physics::StepVerdict::Grows ? "grows" : "leaves it undamped")
+               : fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
+                             format_number(nf, 4), physics::solver_name(rate.solver), format_number(bound, 4),
+                             format_number(h_nf, 3)));
     d.note(derivation(driven, nf));
     d.note(bound_text(rate, h_nf));
     if (mujoco)
@@ -146,21 +171,20 @@ class DriveNaturalFrequency final : public Rule {
                   Applicability::Unsafe, std::move(edits)};
   }
 
-  // The drive as MuJoCo's integrator steps it (physics/servo_step.h): a spring past
-  // h·nf = 1 that an implicitly solved damper holds overdamped does not ring and does
-  // not diverge; its response is the slow mode, which the step resolves.
+  // The drive as MuJoCo's integrator steps it (physics/servo_step.h), on M₀ᵢᵢ: a spring past
+  // h·nf = 1 whose step map decays is not unstable, whatever h·nf; one that grows, or that
+  // nothing damps, is.
   struct MujocoStep {
     const DrivenJoint* driven;
     physics::Servo servo;
-    std::string inertia_label;  // "the guide's I", "the articulation's I"
 
     physics::StepMap map(physics::MujocoIntegrator integrator) const {
       return physics::servo_step(integrator, driven->rate.h(), servo);
     }
-    bool damps_stably(physics::MujocoIntegrator integrator) const {
-      return physics::damps_stably(integrator, driven->rate.h(), servo);
+    physics::StepVerdict verdict(physics::MujocoIntegrator integrator) const {
+      return physics::step_verdict(integrator, driven->rate.h(), servo);
     }
-    bool damps_stably() const { return damps_stably(driven->rate.integrator); }
+    physics::StepVerdict verdict() const { return verdict(driven->rate.integrator); }
 
     std::string damping_text(physics::MujocoIntegrator integrator) const {
       const Unit unit = damping_unit(*driven->joint);
@@ -174,29 +198,42 @@ class DriveNaturalFrequency final : public Rule {
       return "no damping";
     }
 
+    static std::string outcome(physics::StepVerdict verdict) {
+      switch (verdict) {
+        case physics::StepVerdict::Decays: return "decays instead of growing";
+        case physics::StepVerdict::Grows: return "grows every step";
+        case physics::StepVerdict::Undamped: return "is never damped: nothing dissipates the oscillation";
+      }
+      return "";
+    }
+
     std::vector<std::string> notes() const {
       const physics::SimulationRate& rate = driven->rate;
       const physics::StepMap step = map(rate.integrator);
+      const physics::StepVerdict now = verdict();
       std::vector<std::string> out;
       out.push_back(fmt::format(
           "{} ({}) takes the spring explicitly and {}: one step maps (q, q̇) with spectral radius {} on {} = {} {}, "
           "so the spring's unresolved mode {}.",
           physics::integrator_name(rate.integrator), rate.integrator_origin, damping_text(rate.integrator),
-          format_number(step.spectral_radius(), 3), inertia_label, format_number(servo.inertia, 3),
-          driven->inertia_unit(), step.stable() ? "decays instead of growing" : "grows every step"));
+          format_number(step.spectral_radius(), 3), driven->judged.label(), format_number(servo.inertia, 3),
+          driven->inertia_unit(), outcome(now)));
       const double damping_ratio = servo.damping_ratio(), slow_rate = physics::slowest_decay_rate(servo);
-      if (step.stable())
+      if (now == physics::StepVerdict::Decays)
         out.push_back(fmt::format("Damping ratio ζ = {} on {}: {}; the slowest mode decays at {} rad/s, h × that rate = {}.",
-                                  format_number(damping_ratio, 3), inertia_label,
+                                  format_number(damping_ratio, 3), driven->judged.label(),
                                   damping_ratio >= 1 ? "overdamped, the response is that slow mode"
-                                                     : "underdamped, it rings at a frequency the step does not resolve",
+                                                     : "underdamped, it rings at a frequency the step does not resolve "
+                                                       "but dies out",
                                   format_number(slow_rate, 3), format_number(rate.h() * slow_rate, 3)));
       // The other choice of integrator, when it flips the verdict.
       const bool implicit_now = rate.integrator == physics::MujocoIntegrator::Implicit ||
                                 rate.integrator == physics::MujocoIntegrator::ImplicitFast;
       const auto other = implicit_now ? physics::MujocoIntegrator::Euler : physics::MujocoIntegrator::ImplicitFast;
       const physics::StepMap alternative = map(other);
-      if (damps_stably(other) != damps_stably())
+      const bool decays_now = now == physics::StepVerdict::Decays;
+      const bool decays_other = verdict(other) == physics::StepVerdict::Decays;
+      if (decays_other != decays_now)
         out.push_back(fmt::format("Under {}, which takes {}, the same drive would {} (spectral radius {}){}.",
                                   implicit_now ? "MuJoCo's default Euler integrator" : "<option integrator=\"implicitfast\">",
                                   damping_text(other), alternative.stable() ? "decay" : "diverge",
@@ -206,19 +243,10 @@ class DriveNaturalFrequency final : public Rule {
     }
   };
 
-  static std::optional<MujocoStep> mujoco_step(const DrivenJoint& driven, double inertia, std::string inertia_label) {
-    if (driven.rate.solver != physics::Solver::MuJoCo || driven.acceleration() || !(inertia > 0)) return std::nullopt;
-    const physics::Servo servo = mujoco_servo(driven, inertia);
-    return MujocoStep{&driven, servo, std::move(inertia_label)};
-  }
-
-  // Judged on the guide's I and, when known, on the articulation's own: the verdict is the
-  // first of the two that does not damp stably, else the guide's.
-  static std::optional<MujocoStep> mujoco_verdict(const DrivenJoint& driven) {
-    auto guide = mujoco_step(driven, driven.inertia_used, "the guide's I");
-    if (!guide || !guide->damps_stably() || !driven.articulated.known) return guide;
-    auto articulation = mujoco_step(driven, driven.articulated.value, "the articulation's I");
-    return articulation && !articulation->damps_stably() ? articulation : guide;
+  static std::optional<MujocoStep> mujoco_step(const DrivenJoint& driven) {
+    if (driven.rate.solver != physics::Solver::MuJoCo || driven.acceleration() || !(driven.inertia_used > 0))
+      return std::nullopt;
+    return MujocoStep{&driven, mujoco_servo(driven, driven.inertia_used)};
   }
 
   static std::string derivation(const DrivenJoint& driven, double nf) {
@@ -227,12 +255,18 @@ class DriveNaturalFrequency final : public Rule {
                          joint_label(*driven.joint), describe_gain(driven.drive->stiffness, driven.stiffness, stiffness_unit(*driven.joint)),
                          format_number(nf, 4));
     std::string text = fmt::format(
-        "For {}: nf = sqrt(k / I) = sqrt({} / {} {}) = {} rad/s on the guide's lighter-link I; inertias: {}.",
+        "For {}: nf = sqrt(k / I) = sqrt({} / {} {}) = {} rad/s on {}; inertias: {}.",
         joint_label(*driven.joint), describe_gain(driven.drive->stiffness, driven.stiffness, stiffness_unit(*driven.joint)),
-        format_number(driven.inertia_used, 3), driven.inertia_unit(), format_number(nf, 4), driven.inertias_text());
-    if (driven.articulated.known)
+        format_number(driven.inertia_used, 3), driven.inertia_unit(), format_number(nf, 4), driven.judged.label(),
+        driven.inertias_text());
+    if (driven.judged.basis == InertiaBasis::LighterLink && driven.articulated.known)
       text += fmt::format(" On the articulation nf = {} rad/s.",
                           format_number(physics::natural_frequency(driven.stiffness, driven.articulated.value), 4));
+    if (!driven.judged.fallback.empty())
+      text += " The articulation is unknown, so the guide's lighter link stands in for it: it can sit far below what "
+              "an arm's joint moves.";
+    if (driven.judged.basis == InertiaBasis::Articulation)
+      text += " The drive moves its whole distal subtree: PhysX's drive row sees 1/r, not the neighbouring link.";
     return text;
   }
 

@@ -12,7 +12,7 @@
 namespace assetlint::rules {
 
 DriveModel::DriveModel(const Asset& asset, const Settings& settings)
-    : asset_(asset), articulation_(physics::shared_articulation(asset)), rate_(physics::effective_simulation(asset, settings)) {}
+    : asset_(asset), settings_(settings), articulation_(physics::shared_articulation(asset)), rate_(physics::effective_simulation(asset, settings)) {}
 
 std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   if (!is_single_dof(joint.type) || joint.is_mimic() || !joint.drive) return std::nullopt;
@@ -25,11 +25,72 @@ std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   d.damping = drive.damping ? drive.damping->value : 0.0;
   d.inertia = physics::effective_inertia(*articulation_, asset_, joint);
   d.articulated = articulation_->inertia(joint);
-  d.inertia_used = drive.type == DriveType::Acceleration ? 1.0 : d.inertia.value;
+  if (drive.type == DriveType::Acceleration) {
+    d.judged.basis = InertiaBasis::Unit;
+    d.judged.known = true;
+    d.judged.value = 1.0;
+  } else {
+    d.judged = judged_inertia(joint);
+  }
+  d.inertia_used = d.judged.value;
   if (drive.type != DriveType::Acceleration && d.inertia.known && d.inertia.link)
     d.inertia_doubt = physics::inertia_doubt(asset_, *d.inertia.link, articulation_->sole_rotation_axis(*d.inertia.link));
   d.rate = rate_;
   return d;
+}
+
+bool guide_applies(const Asset& asset, const Settings& settings, const Joint& joint) {
+  if (settings.gripper.driven_joint && settings.gripper.driven_joint->value == joint.name.text) return true;
+  for (const Joint* follower : asset.mimic_followers(joint.name.text))
+    if (follower != &joint) return true;
+  return false;
+}
+
+JudgedInertia DriveModel::judged_inertia(const Joint& joint) const {
+  JudgedInertia judged;
+  judged.armature = joint.armature ? joint.armature->value : 0.0;
+  const auto take = [&](const physics::ArticulatedInertia& inertia, InertiaBasis basis) {
+    judged.basis = basis;
+    judged.known = inertia.known;
+    judged.value = inertia.value;
+    judged.unknown_links = inertia.unknown_links;
+    judged.reason = inertia.reason;
+  };
+  if (asset_.format == SourceFormat::Mjcf) {
+    take(articulation_->joint_space_inertia(joint), InertiaBasis::JointSpace);
+    return judged;
+  }
+  const physics::ArticulatedInertia articulated = articulation_->inertia(joint);
+  if (!guide_applies(asset_, settings_, joint) && articulated.known) {
+    take(articulated, InertiaBasis::Articulation);
+    return judged;
+  }
+  const physics::EffectiveInertia lighter = physics::effective_inertia(*articulation_, asset_, joint);
+  judged.basis = InertiaBasis::LighterLink;
+  judged.known = lighter.known;
+  judged.value = lighter.value;
+  judged.unknown_links = lighter.unknown_links;
+  if (!guide_applies(asset_, settings_, joint)) {
+    judged.fallback = articulated.unknown_links.empty()
+                          ? fmt::format("articulation: unknown ({})", articulated.reason)
+                          : fmt::format("articulation: unknown (unauthored mass: {})", name_list(articulated.unknown_links));
+  }
+  return judged;
+}
+
+std::string JudgedInertia::label() const {
+  switch (basis) {
+    case InertiaBasis::Unit: return "I = 1 (acceleration drive)";
+    case InertiaBasis::JointSpace: return "M₀ᵢᵢ";
+    case InertiaBasis::LighterLink: return "the guide's lighter-link I";
+    case InertiaBasis::Articulation: return "the articulation's I";
+  }
+  return "";
+}
+
+std::string JudgedInertia::why_unknown() const {
+  if (!unknown_links.empty()) return fmt::format("no mass authored on {}", name_list(unknown_links));
+  return reason.empty() ? std::string("no link mass") : reason;
 }
 
 physics::DriveRow DrivenJoint::row(double inertia) const {
@@ -43,8 +104,9 @@ physics::DriveRow DrivenJoint::verdict_row() const {
 const char* DrivenJoint::inertia_unit() const { return joint->type == JointType::Prismatic ? "kg" : "kg·m²"; }
 
 std::string DrivenJoint::inertia_text() const {
-  if (acceleration()) return "I = 1 (acceleration drive)";
-  return fmt::format("I = {}", inertia.describe());
+  if (acceleration()) return "the guide's I = 1 (acceleration drive)";
+  if (judged.basis == InertiaBasis::LighterLink) return fmt::format("the guide's I = {}", inertia.describe());
+  return fmt::format("I = {} {} ({})", format_number(judged.value, 3), inertia_unit(), judged.label());
 }
 
 std::string DrivenJoint::inertias_text() const {
@@ -62,6 +124,12 @@ std::string DrivenJoint::inertias_text() const {
     lighter = "lighter link: unknown";
   }
   std::string articulation;
+  if (judged.basis == InertiaBasis::JointSpace) {
+    // An MJCF model: what MuJoCo divides by, M₀ᵢᵢ; 1/r stays in the notes for comparison.
+    const std::string m0 = judged.known ? fmt::format("M₀ᵢᵢ {} {}", format_number(judged.value, 3), inertia_unit())
+                                        : fmt::format("M₀ᵢᵢ: unknown ({})", judged.why_unknown());
+    lighter = m0 + " (MuJoCo's joint-space inertia at qpos0, armature included); " + lighter;
+  }
   if (articulated.known)
     articulation = fmt::format("articulation {} {}", format_number(articulated.value, 3), inertia_unit());
   else if (!articulated.unknown_links.empty())

@@ -13,6 +13,35 @@
 
 namespace assetlint::rules {
 
+// Which inertia a joint's drive is judged on: one decision that drive-natural-frequency,
+// drive-damping-ratio and armature-excessive share, so a natural frequency and a damping ratio
+// never rest on different inertias (docs/physics.md "Which inertia a drive is judged on").
+//   Unit:         an acceleration drive, I = 1;
+//   JointSpace:   an MJCF model: M₀ᵢᵢ, the inertia MuJoCo computes dampratio on;
+//   LighterLink:  a mimic-coupled gripper drive (the guide's setting), or a drive whose
+//                 articulation is unknown: the guide's lighter-link estimate;
+//   Articulation: any other PhysX drive: 1/r, what its drive row sees (an arm's joint moves
+//                 its whole distal subtree, far more than the neighbouring link).
+enum class InertiaBasis { Unit, JointSpace, LighterLink, Articulation };
+
+struct JudgedInertia {
+  InertiaBasis basis = InertiaBasis::LighterLink;
+  bool known = false;
+  double value = 0;     // kg·m² (kg for prismatic), armature included
+  double armature = 0;  // the joint's own, included in value
+  // Why the guide's lighter link stands in for the articulation ("articulation: unknown (…)").
+  std::string fallback;
+  std::vector<std::string> unknown_links;  // when not known: the massless links to blame
+  std::string reason;                      // when not known and no link is to blame
+  // "the guide's lighter-link I", "the articulation's I", "M₀ᵢᵢ", "I = 1 (acceleration drive)"
+  std::string label() const;
+  std::string why_unknown() const;  // "no mass authored on 'a', 'b'" / the reason
+};
+
+// True where the guide's lighter-link figure applies: a drive with mimic joints following it,
+// or the configured [gripper] driven_joint.
+bool guide_applies(const Asset& asset, const Settings& settings, const Joint& joint);
+
 struct DrivenJoint {
   const Joint* joint = nullptr;
   const Drive* drive = nullptr;
@@ -23,7 +52,9 @@ struct DrivenJoint {
   // Why the lighter link's tensor cannot be trusted (a placeholder, a radius of gyration that
   // does not fit): the verdict still stands, but no fix is computed from it. Empty when trusted.
   std::string inertia_doubt;
-  double inertia_used = 0;  // I of the guide's formulas: the lighter link, 1 for acceleration drives
+  JudgedInertia judged;     // the inertia every verdict on this drive rests on
+  double inertia_used = 0;  // judged.value (1 for acceleration drives)
+  bool damping_known() const { return drive->damping_unknown.empty(); }
   physics::SimulationRate rate;
 
   bool acceleration() const { return drive->type == DriveType::Acceleration; }
@@ -35,7 +66,8 @@ struct DrivenJoint {
   // "lighter link 3.37e-6 kg·m² ('left_inner_finger' about 'left_inner_finger_joint'), the guide's
   // estimate; articulation 8.57e-5 kg·m²" or "…; articulation: unknown (unauthored mass: base_link, …)"
   std::string inertias_text() const;
-  std::string inertia_text() const;  // the guide's I for messages: "I = 3.37e-6 kg·m² (…)" / "I = 1 (acceleration drive)"
+  // The judged I for messages: "the guide's I = 3.37e-6 kg·m² (…)", "I = 0.52 kg·m² (M₀ᵢᵢ)"
+  std::string inertia_text() const;
   const char* inertia_unit() const;  // "kg·m²" or "kg"
 };
 
@@ -45,11 +77,15 @@ class DriveModel {
   DriveModel(const Asset& asset, const Settings& settings);
   // A joint with an applied spring drive (stiffness > 0), not a mimic, single DOF.
   std::optional<DrivenJoint> spring_drive(const Joint& joint) const;
+  // The shared decision (JudgedInertia) for any single-DOF joint, driven or not; a force drive
+  // is assumed (acceleration drives are judged on I = 1 by spring_drive).
+  JudgedInertia judged_inertia(const Joint& joint) const;
   const physics::Articulation& articulation() const { return *articulation_; }
   const physics::SimulationRate& rate() const { return rate_; }
 
  private:
   const Asset& asset_;
+  const Settings& settings_;
   std::shared_ptr<const physics::Articulation> articulation_;
   physics::SimulationRate rate_;
 };

@@ -73,6 +73,9 @@ struct PerformanceEnvelope {
 struct Drive {
   OptQuantity stiffness;   // N·m/rad (angular) or N/m (linear)
   OptQuantity damping;     // N·m·s/rad or N·s/m
+  // Why the damping cannot be computed from the file (MJCF `dampratio` when the reader cannot
+  // derive kv); empty when it is known or unauthored. Rules skip the verdicts that need it.
+  std::string damping_unknown;
   OptQuantity max_force;   // N·m or N; unset = unlimited
   DriveType type = DriveType::Force;
   Span type_span;

@@ -72,6 +72,7 @@ Articulation::Articulation(const Asset& asset) : Articulation(asset, default_fre
 Articulation::Articulation(const Asset& asset, FreeRoot free_root) {
   build(asset, free_root);
   solve();
+  solve_joint_space();
 }
 
 int Articulation::body_index(const Link* link) const {
@@ -359,6 +360,49 @@ void Articulation::solve() {
     const Matrix6 project = Matrix6::Identity() - j.motion * u[k].transpose() / d[k];
     phi[c] = project * seen * project.transpose() + j.motion * j.motion.transpose() / d[k];
   }
+}
+
+void Articulation::solve_joint_space() {
+  joint_space_.assign(tree_.size(), {});
+  // Composite rigid-body inertias, leaves first: each body with everything distal to it held.
+  // Names of massless links below a body are kept to a few, for messages.
+  constexpr std::size_t kNamesKept = 8;
+  std::vector<Matrix6> composite(bodies_.size(), Matrix6::Zero());
+  std::vector<std::vector<std::string>> missing(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].world) continue;
+    if (bodies_[b].mass_known) composite[b] = spatial_inertia(bodies_[b].mass, bodies_[b].com, bodies_[b].inertia);
+    for (const auto& name : bodies_[b].unknown_links)
+      if (missing[b].size() < kNamesKept) missing[b].push_back(name);
+  }
+  for (std::size_t k = tree_.size(); k-- > 0;) {
+    const TreeJoint& j = tree_[k];
+    const std::size_t p = static_cast<std::size_t>(j.parent), c = static_cast<std::size_t>(j.child);
+    ArticulatedInertia& result = joint_space_[k];
+    if (!missing[c].empty()) {
+      result.unknown_links = missing[c];
+    } else if (const double value = j.motion.dot(composite[c] * j.motion) + j.armature; value > 0) {
+      result.known = true;
+      result.value = value;
+      result.response = 1.0 / value;
+    } else {
+      result.reason = j.modelled ? "the bodies it moves have no mass" : "a multi-DOF joint";
+    }
+    if (bodies_[p].world) continue;
+    const Matrix6 x = motion_transform(j.child_in_parent);
+    composite[p] += x.transpose() * composite[c] * x;
+    for (const auto& name : missing[c])
+      if (missing[p].size() < kNamesKept) missing[p].push_back(name);
+  }
+}
+
+ArticulatedInertia Articulation::joint_space_inertia(const Joint& joint) const {
+  const auto i = asset_->index_of(joint);
+  if (i && *i < tree_of_joint_.size() && tree_of_joint_[*i] >= 0)
+    return joint_space_[static_cast<std::size_t>(tree_of_joint_[*i])];
+  ArticulatedInertia none;
+  none.reason = "the joint is not part of the articulation's tree";
+  return none;
 }
 
 std::optional<Eigen::Vector3d> Articulation::sole_rotation_axis(const Link& link) const {

@@ -70,6 +70,12 @@ class Articulation {
   // r is then a 6-vector product. No joint-space matrix is formed.
   ArticulatedInertia inertia(const Joint& joint) const;
 
+  // Mᵢᵢ, the joint-space mass matrix's diagonal at q = 0 with the joint's armature: the
+  // inertia of everything distal to the joint about its axis, every other joint held. It is
+  // MuJoCo's dof_M0, the inertia `dampratio` is computed on. Known when every body distal to
+  // the joint has mass; a multi-DOF joint among them counts as held. O(n) for all joints.
+  ArticulatedInertia joint_space_inertia(const Joint& joint) const;
+
   // Jᵀ·M·J: the inertia of the motion in which each listed joint moves at its rate (per unit
   // of a driver) and every other joint, a floating root included, stays still; armatures
   // count with rate². Unknown when any listed joint's `inertia` is. O(n) from the body
@@ -100,6 +106,8 @@ class Articulation {
   std::vector<int> tree_of_joint_;                  // per joint: its tree_ entry, or -1
   int body_index(const Link* link) const;           // -1 for none
   std::vector<ArticulatedInertia> results_;         // per tree_ entry
+  std::vector<ArticulatedInertia> joint_space_;     // per tree_ entry: Mᵢᵢ
+  void solve_joint_space();
 };
 
 // The tree's free-root convention for an asset's format.

@@ -100,8 +100,11 @@ double slowest_decay_rate(const Servo& servo) {
   return omega / (zeta + std::sqrt(zeta * zeta - 1));  // = ω·(ζ − sqrt(ζ² − 1)) without the cancellation
 }
 
-bool damps_stably(MujocoIntegrator integrator, double h, const Servo& servo) {
-  return servo_step(integrator, h, servo).stable() && servo.damping_ratio() >= 1 && h * slowest_decay_rate(servo) <= 1;
+StepVerdict step_verdict(MujocoIntegrator integrator, double h, const Servo& servo) {
+  const double radius = servo_step(integrator, h, servo).spectral_radius();
+  if (!(radius < 1.0 + 1e-12)) return StepVerdict::Grows;
+  if (!(servo.damping() > 0) || radius >= 1.0 - 1e-12) return StepVerdict::Undamped;
+  return StepVerdict::Decays;
 }
 
 }  // namespace assetlint::physics

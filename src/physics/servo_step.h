@@ -50,9 +50,12 @@ StepMap servo_step(MujocoIntegrator integrator, double h, const Servo& servo);
 // ω·(ζ − sqrt(ζ² − 1)) (≈ k/c when heavily damped), ζ < 1 the envelope ζ·ω.
 double slowest_decay_rate(const Servo& servo);
 
-// Past h·nf = 1 a MuJoCo servo is still steady when three things hold: the step map is stable,
-// the servo is overdamped (ζ ≥ 1: the spring's unresolved mode does not ring), and h × its
-// slowest decay rate ≤ 1 (the step resolves the response it does have).
-bool damps_stably(MujocoIntegrator integrator, double h, const Servo& servo);
+// What one step of the integrator does to a disturbance of the servo: the one stability verdict
+// the drive rules give an MJCF model. Decays: the step map's spectral radius is below 1 and the
+// servo has damping. Grows: a mode with |λ| ≥ 1 (beyond rounding). Undamped: no damping at all,
+// so the spring oscillates for ever however the step treats it (semi-implicit Euler keeps it on
+// the unit circle, RK4 only shrinks it numerically).
+enum class StepVerdict { Decays, Grows, Undamped };
+StepVerdict step_verdict(MujocoIntegrator integrator, double h, const Servo& servo);
 
 }  // namespace assetlint::physics

@@ -177,6 +177,7 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
     }
     if (p.dampratio) {
       drive.damping.reset();
+      drive.damping_unknown = fmt::format("{} gives its damping as dampratio, which asset-lint does not convert to kv", label);
       values.unsupported(values.value_span(p.dampratio, "dampratio"), fmt::format("{}: damping given as dampratio", label))
           .note("MuJoCo derives kv from the mass matrix at the reference pose; the drive's damping is left unknown.");
     }
