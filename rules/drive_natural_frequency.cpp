@@ -80,8 +80,7 @@ class DriveNaturalFrequency final : public Rule {
       // Whether the step decays depends on the damping: no verdict without it.
       Diagnostic& d = out.report(
           at, Severity::Info,
-          fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, stability not judged: damping "
-                      "unknown",
+          fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, not judged: damping unknown",
                       short_name(joint), format_number(nf, 4), format_number(bound, 4)));
       d.note(derivation(driven, nf));
       d.note(bound_text(rate, h_nf));
@@ -103,10 +102,10 @@ class DriveNaturalFrequency final : public Rule {
 
     Diagnostic& d = out.report(
         at, Severity::Error,
-        mujoco ? fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s (h·nf = {}), and {}'s step {}",
-                             short_name(joint), format_number(nf, 4), format_number(bound, 4), format_number(h_nf, 3),
-                             physics::integrator_name(rate.integrator),
-                             mujoco->verdict() == physics::StepVerdict::Grows ? "grows" : "leaves it undamped")
+        mujoco ? fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, {} under {}",
+                             short_name(joint), format_number(nf, 4), format_number(bound, 4),
+                             mujoco->verdict() == physics::StepVerdict::Grows ? "diverges" : "undamped",
+                             physics::integrator_name(rate.integrator))
                : fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
                              format_number(nf, 4), physics::solver_name(rate.solver), format_number(bound, 4),
                              format_number(h_nf, 3)));

@@ -1,5 +1,5 @@
-// The articulated inertia 1/(M⁻¹)ᵢᵢ against an independent computation: MuJoCo's joint-space
-// mass matrix of the same URDF (mj_fullM), inverted densely here. MuJoCo 2.2 diagonalises
+// The articulated inertia 1/(M⁻¹)ᵢᵢ and the diagonal Mᵢᵢ against an independent computation:
+// MuJoCo's joint-space mass matrix of the same URDF (mj_fullM), inverted densely here. MuJoCo 2.2 diagonalises
 // each body's inertia, which is exact only to ~1e-9 relative, so the comparison is at 1e-6.
 #include <catch2/catch.hpp>
 
@@ -19,8 +19,13 @@ using namespace assetlint;
 namespace {
 
 #ifdef ASSET_LINT_HAVE_MUJOCO
-// 1/(M⁻¹)ᵢᵢ per joint name, from MuJoCo at q = 0.
-std::map<std::string, double> mujoco_articulated_inertia(const std::filesystem::path& urdf) {
+struct MujocoInertias {
+  double articulated = 0;  // 1/(M⁻¹)ᵢᵢ
+  double diagonal = 0;     // Mᵢᵢ (MuJoCo's dof_M0 at qpos0)
+};
+
+// Both inertias per joint name, from MuJoCo at q = 0.
+std::map<std::string, MujocoInertias> mujoco_inertias(const std::filesystem::path& urdf) {
   char error[1000] = "";
   mjModel* model = mj_loadXML(urdf.string().c_str(), nullptr, error, sizeof error);
   INFO("MuJoCo: " << error);
@@ -31,10 +36,11 @@ std::map<std::string, double> mujoco_articulated_inertia(const std::filesystem::
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> mass(nv, nv);
   mj_fullM(model, mass.data(), data->qM);
   const Eigen::MatrixXd inverse = Eigen::MatrixXd(mass).inverse();
-  std::map<std::string, double> result;
+  std::map<std::string, MujocoInertias> result;
   for (int j = 0; j < model->njnt; ++j) {
     const char* name = mj_id2name(model, mjOBJ_JOINT, j);
-    if (name) result[name] = 1.0 / inverse(model->jnt_dofadr[j], model->jnt_dofadr[j]);
+    const int dof = model->jnt_dofadr[j];
+    if (name) result[name] = {1.0 / inverse(dof, dof), mass(dof, dof)};
   }
   mj_deleteData(data);
   mj_deleteModel(model);
@@ -51,15 +57,18 @@ void compare_with_mujoco(const std::filesystem::path& urdf, std::size_t expected
   const ReadResult read = urdf::read_urdf(std::make_shared<const SourceFile>(urdf.string(), test::read_file(urdf)));
   REQUIRE(read.usable);
   const physics::Articulation articulation(read.asset);
-  const auto reference = mujoco_articulated_inertia(urdf);
+  const auto reference = mujoco_inertias(urdf);
   REQUIRE(reference.size() == expected_joints);
   for (const auto& [name, value] : reference) {
     const Joint* joint = read.asset.find_joint(name);
     REQUIRE(joint);
     const physics::ArticulatedInertia ours = articulation.inertia(*joint);
+    const physics::ArticulatedInertia diagonal = articulation.joint_space_inertia(*joint);
     INFO(name);
     REQUIRE(ours.known);
-    CHECK(ours.value == Approx(value).epsilon(1e-6));
+    CHECK(ours.value == Approx(value.articulated).epsilon(1e-6));
+    REQUIRE(diagonal.known);
+    CHECK(diagonal.value == Approx(value.diagonal).epsilon(1e-6));
   }
 #endif
 }

@@ -127,6 +127,25 @@ TEST_CASE("servo_step: which damping is implicit decides stability past h·nf = 
   CHECK_FALSE(physics::servo_step(MujocoIntegrator::Implicit, 1.0, damped(h_omega_edge * 1.001)).stable());
 }
 
+TEST_CASE("step_verdict: an error only for a growing mode or an undamped spring", "[physics]") {
+  using physics::StepVerdict;
+  // Kinova Gen3 joint_1 on its lighter link: h·nf = 2.27, ζ = 28. implicitfast damps it, Euler's explicit kv does not.
+  const physics::Servo kinova{0.00156, 2000, 0, 100};
+  CHECK(physics::step_verdict(MujocoIntegrator::ImplicitFast, 0.002, kinova) == StepVerdict::Decays);
+  CHECK(physics::step_verdict(MujocoIntegrator::Euler, 0.002, kinova) == StepVerdict::Grows);
+  // Underdamped (ζ = 0.13) past h·nf = 2 under implicitfast: it rings, but the step map decays.
+  CHECK(physics::step_verdict(MujocoIntegrator::ImplicitFast, 0.002, physics::Servo{0.0018, 2000, 0, 0.5}) ==
+        StepVerdict::Decays);
+  // No damping: semi-implicit Euler keeps the oscillation on the unit circle below h·ω = 2 and
+  // grows above it; RK4 shrinks it only numerically.
+  const auto undamped = [](double h_omega) { return physics::Servo{1.0, h_omega * h_omega, 0, 0}; };
+  CHECK(physics::step_verdict(MujocoIntegrator::ImplicitFast, 1.0, undamped(1.5)) == StepVerdict::Undamped);
+  CHECK(physics::step_verdict(MujocoIntegrator::Euler, 1.0, undamped(2.5)) == StepVerdict::Grows);
+  CHECK(physics::step_verdict(MujocoIntegrator::RK4, 1.0, undamped(1.5)) == StepVerdict::Undamped);
+  // Joint damping alone is implicit under Euler: it decays.
+  CHECK(physics::step_verdict(MujocoIntegrator::Euler, 1.0, physics::Servo{1.0, 2.25, 0.5, 0}) == StepVerdict::Decays);
+}
+
 TEST_CASE("slowest_decay_rate: the slow real pole when overdamped, ζ·ω when underdamped", "[physics]") {
   // k = 2000, c = 100, I = 0.00156: poles solve I·s² + c·s + k = 0.
   const physics::Servo servo{0.00156, 2000, 0, 100};
