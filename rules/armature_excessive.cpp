@@ -270,7 +270,7 @@ class ArmatureExcessive final : public Rule {
                  {{"max_ratio", 10.0,
                    "report armature above this multiple of what the joint moves about its axis (the lighter link for a "
                    "mimic-coupled gripper drive)"},
-                  {"flywheel_ratio", 100.0,
+                  {"flywheel_ratio", 10000.0,
                    "warn when the armature is above this multiple of everything the joint moves (a flywheel)"}}};
 };
 

@@ -84,7 +84,7 @@ class DriveNaturalFrequency final : public Rule {
                       short_name(joint), format_number(nf, 4), format_number(bound, 4)));
       d.note(derivation(driven, nf));
       d.note(bound_text(rate, h_nf));
-      d.note(fmt::format("Whether {} damps the spring's unresolved mode depends on the damping, and {}.",
+      d.note(fmt::format("Whether {} damps the spring's unresolved mode depends on the damping, which is unknown: {}.",
                          physics::integrator_name(rate.integrator), driven.drive->damping_unknown));
       return;
     }
@@ -275,8 +275,9 @@ class DriveNaturalFrequency final : public Rule {
                          "h·nf = {}.",
                          format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));
     if (rate.solver == physics::Solver::MuJoCo)
-      return fmt::format("MuJoCo integrates a position actuator's spring explicitly once per timestep; the guide's bound "
-                         "is nf ≤ 1/timestep = {} rad/s, i.e. h·nf ≤ 1 at {}; here h·nf = {}.",
+      return fmt::format("MuJoCo integrates a position actuator's spring explicitly once per timestep: past nf = "
+                         "1/timestep = {} rad/s ({}; here h·nf = {}) the step does not resolve the spring's own "
+                         "oscillation, and whether it dies out is the integrator's step map's to say, not PhysX's bound.",
                          format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));
     return fmt::format("The bound is nf ≤ rate = {} rad/s, i.e. h·nf ≤ 1 at {}; here h·nf = {}.",
                        format_number(rate.frequency_bound(), 4), rate.describe(), format_number(h_nf, 3));

@@ -60,19 +60,28 @@ class Reader {
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
     const FixedTendons tendons = read_fixed_tendons(sections);
     std::vector<const XMLElement*> joint_equalities;
+    // An actuator on a spatial tendon, a site or a body moves joints the model does not name
+    // (a tendon-driven hand's finger joints): then no joint can be called passive.
+    bool unnamed_transmission = false;
     for (const XMLElement* el : sections) {
       const std::string_view tag = el->Name();
       if (tag == "equality") {
         for (const XMLElement* c : sources_.children(el))
           if (std::string_view(c->Name()) == "joint") joint_equalities.push_back(c);
       } else if (tag == "actuator") {
-        for (const XMLElement* c : sources_.children(el))
+        for (const XMLElement* c : sources_.children(el)) {
           read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset);
+          const char* tendon = c->Attribute("tendon");
+          if ((tendon && !tendons.contains(tendon)) || c->Attribute("site") || c->Attribute("body") ||
+              c->Attribute("cranksite"))
+            unnamed_transmission = true;
+        }
       }
     }
     // MJCF lists every actuator: a joint none of them reaches is moved only by its links.
-    for (Joint& joint : result_.asset.joints)
-      if (joint.actuation == Actuation::Unknown) joint.actuation = Actuation::Passive;
+    if (!unnamed_transmission)
+      for (Joint& joint : result_.asset.joints)
+        if (joint.actuation == Actuation::Unknown) joint.actuation = Actuation::Passive;
     // After the actuators: which side of a coupling is driven decides which one follows.
     for (const XMLElement* el : joint_equalities) read_equality_joint(el);
     result_.asset.index_names();  // after the equalities: they make the mimics
