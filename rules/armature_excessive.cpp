@@ -141,7 +141,9 @@ class ArmatureExcessive final : public Rule {
                          "the guide describes, and it changes the robot unless a motor datasheet backs it.",
                          format_number(c.driven->stiffness, 4), unit_symbol(stiffness_unit(joint)),
                          format_number(without->inertia, 3), c.unit(), format_number(without->natural_frequency, 4),
-                         c.driven->judged.label(), format_number(rate.frequency_bound(), 4), rate.step_text(),
+                         c.driven->judged.basis == InertiaBasis::LighterLink && c.driven->articulated.known
+                             ? std::string("the articulation's I")
+                             : c.driven->judged.label(), format_number(rate.frequency_bound(), 4), rate.step_text(),
                          rate.solver == physics::Solver::MuJoCo
                              ? fmt::format(", and {}'s step would not damp it", physics::integrator_name(rate.integrator))
                              : std::string()));
@@ -203,11 +205,12 @@ class ArmatureExcessive final : public Rule {
   }
 
   // The natural frequency the drive would have without its armature, when the drive would then
-  // fail: past PhysX's bound, or (MuJoCo) with a step map that does not decay. On the judged
-  // inertia less the armature (drive_support.h; the armature adds to Mᵢᵢ and to 1/r one for one).
+  // fail: past PhysX's bound, or (MuJoCo) with a step map that does not decay. On what the
+  // solver divides by (DrivenJoint::solver_inertia) less the armature, which adds to Mᵢᵢ and to
+  // 1/r one for one: whether the drive is stable is the solver's question, not the guide's figure's.
   static std::optional<Crutch> crutch(const Candidate& c) {
     if (!c.driven || c.driven->acceleration() || !c.driven->judged.known) return std::nullopt;
-    const double inertia = c.driven->judged.value - c.armature;
+    const double inertia = c.driven->solver_inertia() - c.armature;
     if (!(inertia > 0)) return std::nullopt;
     const double without = physics::natural_frequency(c.driven->stiffness, inertia);
     const physics::SimulationRate& rate = c.driven->rate;

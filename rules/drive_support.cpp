@@ -40,7 +40,10 @@ std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
 }
 
 bool guide_applies(const Asset& asset, const Settings& settings, const Joint& joint) {
-  if (settings.gripper.driven_joint && settings.gripper.driven_joint->value == joint.name.text) return true;
+  // Named as written in the file, or by its last path element for a USD prim.
+  if (settings.gripper.driven_joint &&
+      (settings.gripper.driven_joint->value == joint.name.text || settings.gripper.driven_joint->value == short_path(joint.name.text)))
+    return true;
   for (const Joint* follower : asset.mimic_followers(joint.name.text))
     if (follower != &joint) return true;
   return false;
@@ -91,6 +94,11 @@ std::string JudgedInertia::label() const {
 std::string JudgedInertia::why_unknown() const {
   if (!unknown_links.empty()) return fmt::format("no mass authored on {}", name_list(unknown_links));
   return reason.empty() ? std::string("no link mass") : reason;
+}
+
+double DrivenJoint::solver_inertia() const {
+  if (judged.basis == InertiaBasis::LighterLink && articulated.known) return articulated.value;
+  return judged.value;
 }
 
 physics::DriveRow DrivenJoint::row(double inertia) const {

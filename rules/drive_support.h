@@ -55,6 +55,10 @@ struct DrivenJoint {
   JudgedInertia judged;     // the inertia every verdict on this drive rests on
   double inertia_used = 0;  // judged.value (1 for acceleration drives)
   bool damping_known() const { return drive->damping_unknown.empty(); }
+  // What the solver itself divides the drive's force by, for "is it stable?": MuJoCo's M₀ᵢᵢ,
+  // PhysX's articulated 1/r when known; else the judged inertia. It differs from `judged` only
+  // for a mimic-coupled gripper, whose judged figure is the guide's lighter link.
+  double solver_inertia() const;
   physics::SimulationRate rate;
 
   bool acceleration() const { return drive->type == DriveType::Acceleration; }
