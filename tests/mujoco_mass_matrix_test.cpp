@@ -5,7 +5,10 @@
 
 #include <Eigen/Dense>
 #include <filesystem>
+#include <regex>
 
+#include "engine/file_system.h"
+#include "formats/mjcf/mjcf_reader.h"
 #include "formats/urdf/urdf_reader.h"
 #include "physics/articulation.h"
 #include "test_support.h"
@@ -82,4 +85,50 @@ TEST_CASE("articulated inertia equals MuJoCo's 1/(M⁻¹)ᵢᵢ: a tree with rot
 
 TEST_CASE("articulated inertia equals MuJoCo's 1/(M⁻¹)ᵢᵢ: the Robotiq 2F-85 fixture", "[physics][articulation][mujoco]") {
   compare_with_mujoco(test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf", 6);
+}
+
+TEST_CASE("joint-space inertia of MJCF fixtures equals MuJoCo's dof_M0, armature included", "[physics][articulation][mujoco]") {
+#ifndef ASSET_LINT_HAVE_MUJOCO
+  WARN("libmujoco-dev is not installed (scripts/bootstrap.sh installs it): MuJoCo dof_M0 test skipped");
+#else
+  // Models with <inertial> on every body and no meshes, so MuJoCo compiles them as they are.
+  const auto dir = test::fixtures_dir() / "rules";
+  std::size_t compared = 0;
+  for (const auto& path : {dir / "armature-excessive" / "humanoid_ankle.xml", dir / "drive-damping-ratio" / "tiago_style_arm.xml",
+                           dir / "drive-damping-ratio" / "arm_shoulder_articulated.xml",
+                           dir / "armature-excessive" / "flywheel.xml"}) {
+    INFO(path.string());
+    const DiskFileSystem files;
+    const ReadResult read = mjcf::read_mjcf(std::make_shared<const SourceFile>(path.string(), test::read_file(path)), files);
+    REQUIRE(read.usable);
+    const physics::Articulation articulation(read.asset);
+    // The Debian libmujoco predates <position kv>, autolimits and implicitfast: actuators, joint
+    // ranges and the integrator do not change dof_M0, so they go.
+    std::string text = std::regex_replace(test::read_file(path), std::regex(R"( (range|integrator)="[^"]*")"), "");
+    const auto begin = text.find("<actuator>"), end = text.find("</actuator>");
+    REQUIRE(begin != std::string::npos);
+    REQUIRE(end != std::string::npos);
+    text.erase(begin, end + std::string("</actuator>").size() - begin);
+    test::TempDir temp;
+    const auto copy = temp.path() / "model.xml";
+    test::write_file(copy, text);
+    char error[1000] = "";
+    mjModel* model = mj_loadXML(copy.string().c_str(), nullptr, error, sizeof error);
+    INFO("MuJoCo: " << error);
+    REQUIRE(model);
+    for (int j = 0; j < model->njnt; ++j) {
+      const char* name = mj_id2name(model, mjOBJ_JOINT, j);
+      REQUIRE(name);
+      const Joint* joint = read.asset.find_joint(name);
+      REQUIRE(joint);
+      const physics::ArticulatedInertia ours = articulation.joint_space_inertia(*joint);
+      INFO(name);
+      REQUIRE(ours.known);
+      CHECK(ours.value == Approx(model->dof_M0[model->jnt_dofadr[j]]).epsilon(1e-6));
+      ++compared;
+    }
+    mj_deleteModel(model);
+  }
+  CHECK(compared >= 6);
+#endif
 }
