@@ -60,7 +60,7 @@ TEST_CASE("add-suppressions: USDA gets a # comment before the statement, one per
   CHECK(after == expected);
 }
 
-TEST_CASE("add-suppressions: CRLF files keep CRLF; an element inside a line gets an inline comment",
+TEST_CASE("add-suppressions: CRLF files keep CRLF, an element inside a line gets an inline comment",
           "[add-suppressions]") {
   TempDir dir;
   const std::string crlf =

@@ -144,7 +144,7 @@ TEST_CASE("a floating base: two bodies on one axis share the motion, I₁·I₂/
   CHECK(anchored.inertia(a.joints[0]).value == Approx(0.05).epsilon(1e-12));
 }
 
-TEST_CASE("unknown when a moving body has no authored mass or COM; world-welded bodies do not count", "[physics][articulation]") {
+TEST_CASE("unknown when a moving body has no authored mass or COM, world-welded bodies do not count", "[physics][articulation]") {
   Asset a;
   a.format = SourceFormat::Usda;
   a.links = {massless("/r/base"), link("/r/knuckle", 0.03, {0, 0.03, 0.01}, {1e-5, 1e-5, 1e-5}), massless("/r/pad"),

@@ -72,7 +72,7 @@ TEST_CASE("baseline: --write-baseline records rule, path, element and attribute"
   CHECK(clean.err == "asset-lint: 4 findings recorded in baseline 'asset-lint-baseline.json' not reported\n");
 }
 
-TEST_CASE("baseline: unrelated edits keep the keys (URDF and USDA); new findings are reported, stale entries named",
+TEST_CASE("baseline: unrelated edits keep the keys (URDF and USDA), new findings are reported, stale entries named",
           "[baseline]") {
   TempDir dir;
   copy_assets(dir.path());
@@ -105,7 +105,7 @@ TEST_CASE("baseline: unrelated edits keep the keys (URDF and USDA); new findings
         "  gripper.urdf: joint 'finger_joint' limit.lower [limits-inverted]\n");
 }
 
-TEST_CASE("baseline: keys do not depend on the working directory; unchecked files are not stale", "[baseline]") {
+TEST_CASE("baseline: keys do not depend on the working directory, unchecked files are not stale", "[baseline]") {
   TempDir dir;
   std::filesystem::create_directories(dir.path() / "assets");
   copy_assets(dir.path() / "assets");

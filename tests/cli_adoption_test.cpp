@@ -24,7 +24,7 @@ const char* kInjectingUrdf =
 
 }  // namespace
 
-TEST_CASE("adoption: infos never fail the run unless --fail-on info; --fail-on error", "[adoption]") {
+TEST_CASE("adoption: infos never fail the run unless --fail-on info, --fail-on error", "[adoption]") {
   const std::vector<std::string> infos_only = {"--select", "stale-schema-attribute", "joints.usda"};
   auto r = run_cli(infos_only, report_dir());
   CHECK(r.exit_code == 0);
@@ -46,7 +46,7 @@ TEST_CASE("adoption: no path checks the working directory", "[adoption]") {
   CHECK(r.out.rfind("gripper.urdf:9:19: limits-inverted ", 0) == 0);
 }
 
-TEST_CASE("adoption: --diff with a structured format is a usage error; a clean --diff says so", "[adoption]") {
+TEST_CASE("adoption: --diff with a structured format is a usage error, a clean --diff says so", "[adoption]") {
   auto r = run_cli({"--diff", "--output-format", "json", "gripper.urdf"}, report_dir());
   CHECK(r.exit_code == 2);
   CHECK(r.out.empty());

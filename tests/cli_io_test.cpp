@@ -29,7 +29,7 @@ void make_tree(const std::filesystem::path& root) {
 
 }  // namespace
 
-TEST_CASE("io: an unreadable entry is an error naming it; the rest is still checked", "[io]") {
+TEST_CASE("io: an unreadable entry is an error naming it, the rest is still checked", "[io]") {
   TempDir dir;
   make_tree(dir.path());
   auto r = run_cli({"."}, dir.path());

@@ -134,7 +134,7 @@ TEST_CASE("cli: directories are searched recursively in a stable order", "[cli]"
   CHECK(r.out.find("in 3 files.") != std::string::npos);
 }
 
-TEST_CASE("cli: asset-lint.toml is found above the file; flags override it; bad keys exit 2", "[cli]") {
+TEST_CASE("cli: asset-lint.toml is found above the file, flags override it, bad keys exit 2", "[cli]") {
   assetlint::test::TempDir dir;
   std::filesystem::create_directories(dir.path() / "robots");
   const std::string gripper = assetlint::test::read_file(assetlint::test::source_dir() / kClean);

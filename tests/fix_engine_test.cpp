@@ -155,7 +155,7 @@ TEST_CASE("fix: display fixes are never applied", "[fix]") {
   CHECK(r.applied == 0);
 }
 
-TEST_CASE("fix: overlapping fixes wait for the next round; the first by position wins", "[fix]") {
+TEST_CASE("fix: overlapping fixes wait for the next round, the first by position wins", "[fix]") {
   MemoryFiles files;
   files.files["robot.urdf"] = kDegrees;
   const std::size_t comment = offset_of(kDegrees, "a comment");

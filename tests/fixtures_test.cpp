@@ -88,7 +88,7 @@ TEST_CASE("the bundled Robotiq 2F-85 tells the guide's story: 5700 N·m/rad is t
   CHECK(text.find("0.06089 N·m·s/rad") != std::string::npos);
 }
 
-TEST_CASE("every primary message is short; the numbers go in notes", "[fixtures][diagnostics]") {
+TEST_CASE("every primary message is short, the numbers go in notes", "[fixtures][diagnostics]") {
   std::size_t checked = 0;
   for (const auto& file : fixture_assets()) {
     for (const Diagnostic& d : lint_fixture(file).diagnostics) {

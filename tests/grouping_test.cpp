@@ -15,7 +15,7 @@ Diagnostic finding(std::string message, std::string note, std::uint32_t line) {
   return d;
 }
 
-TEST_CASE("grouping: findings differing only in quoted names group; other words or numbers do not", "[report]") {
+TEST_CASE("grouping: findings differing only in quoted names group, other words or numbers do not", "[report]") {
   const std::vector<Diagnostic> ds{
       finding("link 'palm' moves but has no <inertial>", "It is the child of revolute joint 'WRJ1'.", 31),
       finding("link 'thumb' moves but has no <inertial>", "It is the child of revolute joint 'THJ5'.", 64),

@@ -126,7 +126,7 @@ TEST_CASE("introspection: --list-rules --output-format json", "[introspection]")
   CHECK(sarif.err == "asset-lint: error: --list-rules prints text or --output-format json\n");
 }
 
-TEST_CASE("introspection: rule --all prints every page; rule --help is help", "[introspection]") {
+TEST_CASE("introspection: rule --all prints every page, rule --help is help", "[introspection]") {
   auto all = run_cli({"rule", "--all"});
   CHECK(all.exit_code == 0);
   for (const auto* rule : assetlint::rules::catalog())

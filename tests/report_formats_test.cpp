@@ -310,7 +310,7 @@ TEST_CASE("report: --statistics counts findings per rule, most frequent first", 
   auto r = run_cli({"--statistics", "--select", "limits-inverted,stale-schema-attribute", "."}, dir.path());
   CHECK(r.exit_code == 1);
   CHECK(r.out ==
-        "2  limits-inverted         A joint's lower limit is above its upper limit\n"
+        "2  limits-inverted         A joint's lower limit is above its upper limit, or equal limits lock a joint whose mirror twin moves\n"
         "2  stale-schema-attribute  Attributes authored for a USD API schema that is not applied (or was deleted): "
         "PhysX ignores them\n");
   auto json = run_cli({"--statistics", "--output-format", "json", "a.urdf"}, dir.path());

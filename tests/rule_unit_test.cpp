@@ -260,7 +260,7 @@ TEST_CASE("mimic-limit-conflict: the ros-industrial 2F-85 mimic limits [0, 0.875
   CHECK(d.fix->edits[1].replacement == "0");
 }
 
-TEST_CASE("mimic-limit-conflict: offsets shift the mapped range; tolerance option", "[rules]") {
+TEST_CASE("mimic-limit-conflict: offsets shift the mapped range, tolerance option", "[rules]") {
   // q = 1·q_ref + 0.1 maps [0, 0.820305] to [0.1, 0.920305], above upper 0.820305.
   std::string text = gripper(kMimic, R"(<mimic joint="finger_joint" multiplier="1" offset="0.1"/>)");
   text = with(text, kMimicLimit, R"(<limit lower="0" upper="0.820305" effort="4" velocity="2.9"/>)");
@@ -333,7 +333,7 @@ TEST_CASE("units-velocity-implausible: 166 (deg/s) on the 0.82 rad finger, fix t
   CHECK(rule_ids(lint(text)) == std::vector<std::string>{"units-velocity-implausible", "mimic-max-velocity"});
 }
 
-TEST_CASE("units-velocity-implausible: placeholders and a legit fast joint; max_angular_velocity option", "[rules]") {
+TEST_CASE("units-velocity-implausible: placeholders and a legit fast joint, max_angular_velocity option", "[rules]") {
   Settings only;
   only.selection.select = {"units-velocity-*"};
   for (const std::string velocity : {"1000", "1e9"}) {
@@ -400,20 +400,22 @@ TEST_CASE("inertia-invalid: a massless or missing inertial on a moving link", "[
   CHECK(lint(gripper(R"(<mass value="0.636"/>)", R"(<mass value="0"/>)")).diagnostics.empty());
 }
 
-TEST_CASE("drive-max-force: sentinels and placeholders are infos without a spec; mimics are not driven", "[rules]") {
+TEST_CASE("drive-max-force: sentinels and placeholders are infos without a spec, mimics are not driven", "[rules]") {
   const std::string zero = gripper(kDrivenLimit, R"(<limit lower="0" upper="0.820305" effort="0" velocity="2.9"/>)");
   const auto report = lint(zero);
   REQUIRE(report.diagnostics.size() == 1);
   const Diagnostic& sentinel = report.diagnostics[0];
   CHECK(sentinel.rule == "drive-max-force");
-  CHECK(sentinel.severity == Severity::Info);
+  // The joint the mimic follows: its effort is the grip, so even without a spec a warning.
+  CHECK(sentinel.severity == Severity::Warning);
   CHECK(sentinel.span.line == 27);
   CHECK(sentinel.span.column == 47);
   CHECK(sentinel.span.offset == offset_of(zero, R"(effort="0")", "0"));
   // No [drives] table and no spec: the joint is not called driven.
   CHECK(sentinel.message == "effort 0 N·m of revolute joint 'finger_joint' is a sentinel: unbounded in Isaac Sim, zero elsewhere");
-  REQUIRE(sentinel.notes.size() == 1);
+  REQUIRE(sentinel.notes.size() == 2);
   CHECK(sentinel.notes[0].message.find("Isaac Sim's URDF importer reads effort ≤ 0 as no limit") == 0);
+  CHECK(sentinel.notes[1].message.find("It is the joint the gripper's mimic joints follow") == 0);
 
   CHECK(lint(gripper(kMimicLimit, R"(<limit lower="-0.820305" upper="0" effort="0" velocity="2.9"/>)")).diagnostics.empty());
 
@@ -425,7 +427,7 @@ TEST_CASE("drive-max-force: sentinels and placeholders are infos without a spec;
   settings.rule_options["drive-max-force"]["placeholder_force"] = 1000.0;
   const auto placeholder = lint(thousand, settings);
   REQUIRE(placeholder.diagnostics.size() == 1);
-  CHECK(placeholder.diagnostics[0].severity == Severity::Info);
+  CHECK(placeholder.diagnostics[0].severity == Severity::Warning);  // the mimic's leader: the grip
   CHECK(placeholder.diagnostics[0].message == "effort 1000 N·m of revolute joint 'finger_joint' looks like a placeholder");
   CHECK(placeholder.diagnostics[0].notes.at(0).message ==
         "At or above placeholder_force 1000, the bound is effectively no bound.");

@@ -23,7 +23,7 @@ bool runs(std::vector<std::string> select, std::vector<std::string> ignore, cons
 
 }  // namespace
 
-TEST_CASE("selection: the more specific selector wins; ignore wins a tie", "[selection]") {
+TEST_CASE("selection: the more specific selector wins, ignore wins a tie", "[selection]") {
   CHECK(runs({"mimic-max-velocity"}, {"mimic-*"}, "mimic-max-velocity"));
   CHECK_FALSE(runs({"mimic-max-velocity"}, {"mimic-*"}, "mimic-limit-conflict"));
   CHECK_FALSE(runs({"mimic-*"}, {"mimic-max-velocity"}, "mimic-max-velocity"));

@@ -122,7 +122,7 @@ TEST_CASE("simulate: a load above max force stalls the joint, and the report say
   CHECK(t.out.find("The load (30 N·m) exceeds the max force, yet the joint moves on") != std::string::npos);
 }
 
-TEST_CASE("simulate: --csv and --plot write the series; rsvg-convert renders the SVG", "[simulate][cli]") {
+TEST_CASE("simulate: --csv and --plot write the series, rsvg-convert renders the SVG", "[simulate][cli]") {
   Gripper g("stiffness = 275\ndamping = 0.061\n");
   auto r = run_cli({"simulate", "gripper.urdf", "--rate", "250", "--position-iterations", "64", "--csv", "run.csv",
                     "--plot", "run.svg", "--duration", "0.5"},
@@ -145,7 +145,7 @@ TEST_CASE("simulate: --csv and --plot write the series; rsvg-convert renders the
   CHECK(std::filesystem::file_size(png) > 10000);
 }
 
-TEST_CASE("simulate: bad input is one line naming it, exit 2; work is bounded", "[simulate][cli]") {
+TEST_CASE("simulate: bad input is one line naming it, exit 2, work is bounded", "[simulate][cli]") {
   Gripper g("stiffness = 275\n");
   const auto error = [&](std::vector<std::string> args) {
     args.insert(args.begin(), {"simulate", "gripper.urdf"});

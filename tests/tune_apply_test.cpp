@@ -152,7 +152,7 @@ TEST_CASE("tune --apply on USD: per-degree gains, max force and velocity, none o
   CHECK(read_file(dir.path() / "gripper.usda") == after);
 }
 
-TEST_CASE("tune --apply on MJCF: the actuator's kp, kv and whole forcerange; no velocity; class values kept",
+TEST_CASE("tune --apply on MJCF: the actuator's kp, kv and whole forcerange, no velocity, class values kept",
           "[tune][cli][mjcf]") {
   test::TempDir dir;
   std::string text = read_file(test::fixtures_dir() / "mjcf" / "robotiq_2f85" / "robotiq_2f85.xml");

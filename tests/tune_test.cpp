@@ -127,7 +127,7 @@ TEST_CASE("tune: armature 5e-3 gives 234 rad/s and a 2e-6 kg·m² rotor at G = 5
   CHECK(step(d, "rotor_inertia").inputs[1].origin == "asset-lint.toml:4");
 }
 
-TEST_CASE("tune: missing spec inputs name their key and flag; other steps still print", "[tune]") {
+TEST_CASE("tune: missing spec inputs name their key and flag, other steps still print", "[tune]") {
   Settings settings;
   auto loaded = load_asset((test::source_dir() / kUrdf).string(), settings);
   REQUIRE(loaded.read.usable);

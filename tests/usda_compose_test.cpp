@@ -75,7 +75,7 @@ TEST_CASE("compose: sublayers are weaker than the layer, earlier sublayers stron
   CHECK(y->attribute->default_value->span.line == 3);
 }
 
-TEST_CASE("compose: a diamond is not a cycle; the shared layer keeps its strongest position", "[usd][compose]") {
+TEST_CASE("compose: a diamond is not a cycle, the shared layer keeps its strongest position", "[usd][compose]") {
   MemoryFileSystem fs({{"config.usda", "#usda 1.0\n(\n subLayers = [@physics.usda@, @base.usda@]\n)\n"},
                        {"physics.usda", "#usda 1.0\n(\n subLayers = [@base.usda@]\n)\nover \"R\" { float x = 2 }\n"},
                        {"base.usda", "#usda 1.0\ndef \"R\" { float x = 3 }\n"}});
@@ -89,7 +89,7 @@ TEST_CASE("compose: a diamond is not a cycle; the shared layer keeps its stronge
   CHECK(s.sources.size() == 3);
 }
 
-TEST_CASE("compose: over prims merge into def prims; only-over prims are not defined", "[usd][compose]") {
+TEST_CASE("compose: over prims merge into def prims, only-over prims are not defined", "[usd][compose]") {
   MemoryFileSystem fs({{"r.usda", "#usda 1.0\n(\n subLayers = [@b.usda@]\n)\nover \"A\" { over \"B\" { float m = 5 } }\nover \"Ghost\" {}\n"},
                        {"b.usda", "#usda 1.0\ndef Xform \"A\" { def Xform \"B\" { float m = 1\n float n = 1 } }\n"}});
   Stage s = compose(fs, "r.usda");

@@ -656,7 +656,7 @@ TEST_CASE("usda parser: CRLF and BOM input", "[usda][parser]") {
   CHECK(bad.error().span.column == 1);
 }
 
-TEST_CASE("usda parser: statements separated by ';' and comments", "[usda][parser]") {
+TEST_CASE("usda parser: statements separated by ',' and comments", "[usda][parser]") {
   const Parsed p = must_parse("#usda 1.0 # trailing comment\n( upAxis = \"Y\"; metersPerUnit = 1 )\n"
                               "def \"a\" { float x = 1; float y = 2 } // done\n/* block */ def \"b\" {}\n");
   CHECK(p.layer().metadata.size() == 2);

@@ -161,7 +161,7 @@ TEST_CASE("usd reader: revolute joint with drive, PhysX joint values, limits", "
   CHECK(slide->parent.text.empty());  // world-attached
 }
 
-TEST_CASE("usd reader: mimic joint gearing, offset, compliance; infinite limits are free", "[usd][reader]") {
+TEST_CASE("usd reader: mimic joint gearing, offset, compliance, infinite limits are free", "[usd][reader]") {
   ReadResult r = read_text(kRobot);
   const Joint* j = r.asset.find_joint("/robot/J1");
   REQUIRE(j);
