@@ -51,6 +51,7 @@ class DriveDampingRatio final : public Rule {
                          joint_label(joint), describe_gain(drive.damping, driven->damping, damping_unit(joint)),
                          describe_gain(drive.stiffness, driven->stiffness, stiffness_unit(joint)),
                          format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
+      if (!drive.damping_origin.empty()) d.note(drive.damping_origin + ".");
       if (!driven->acceleration()) d.note(fmt::format("Inertias: {}.", driven->inertias_text()));
       if (steadies_stiff_spring) {
         const physics::Servo servo = mujoco_servo(*driven, inertia);

@@ -50,6 +50,9 @@ struct Link {
   Span span;  // the element or prim
   std::optional<Inertial> inertial;
   bool kinematic = false;  // USD physics:kinematicEnabled: moved by the user, not the solver
+  // MJCF body without <inertial> (or <compiler inertiafromgeom="true">) that holds geoms:
+  // MuJoCo derives its mass and inertia from them, which asset-lint does not compute.
+  bool mass_from_geoms = false;
 };
 
 enum class JointType { Revolute, Continuous, Prismatic, Fixed, Floating, Planar, Spherical, Generic };
@@ -76,6 +79,8 @@ struct Drive {
   // Why the damping cannot be computed from the file (MJCF `dampratio` when the reader cannot
   // derive kv); empty when it is known or unauthored. Rules skip the verdicts that need it.
   std::string damping_unknown;
+  // A damping the file does not write but the engine derives (MJCF dampratio): how, with numbers.
+  std::string damping_origin;
   OptQuantity max_force;   // N·m or N; unset = unlimited
   DriveType type = DriveType::Force;
   Span type_span;

@@ -179,7 +179,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
       const Link& link = *body.links[i];
       const auto& in = link.inertial;
       const bool usd = asset.format == SourceFormat::Usda;
-      if (!in ? usd : (!in->mass_authored || !in->inertia_authored || !in->com_authored || !(in->mass.value >= 0))) {
+      if (!in ? usd || link.mass_from_geoms : (!in->mass_authored || !in->inertia_authored || !in->com_authored || !(in->mass.value >= 0))) {
         body.unknown_links.push_back(link.name.text);
         continue;
       }
@@ -189,6 +189,7 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
     }
     if (!body.unknown_links.empty()) continue;
     if (!(mass > 0)) {
+      body.massless = mass == 0;
       for (const Link* link : body.links) body.unknown_links.push_back(link->name.text);
       continue;
     }
@@ -234,6 +235,32 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
   tree_of_joint_.assign(asset.joints.size(), -1);
   std::vector<bool> visited(bodies_.size(), false);
   std::vector<bool> used(edges.size(), false);
+  const auto make_tree_joint = [&](const Joint* joint, int at, int next, bool forward) {
+    TreeJoint tj;
+    tj.joint = joint;
+    tj.parent = at;
+    tj.child = next;
+    tj.armature = joint->armature ? joint->armature->value : 0.0;
+    tj.modelled = !is_multi_dof(joint->type);
+    // The joint frame in each body; the world side needs none (it does not move).
+    const auto frame_in = [&](int body, int which) {
+      const int link = side_index(*joint, which);
+      const Eigen::Isometry3d& f = joint->frame_in_link[static_cast<std::size_t>(which)];
+      return body == world || link < 0 ? f : link_pose[static_cast<std::size_t>(link)] * f;
+    };
+    const Eigen::Isometry3d in_parent = frame_in(at, forward ? 0 : 1);
+    const Eigen::Isometry3d in_child = frame_in(next, forward ? 1 : 0);
+    tj.child_in_parent = in_parent * in_child.inverse();
+    const Eigen::Vector3d axis = (in_child.linear() * joint->axis).normalized();
+    if (joint->type == JointType::Prismatic) {
+      tj.motion.tail<3>() = axis;
+    } else {
+      tj.motion.head<3>() = axis;
+      tj.motion.tail<3>() = in_child.translation().cross(axis);
+    }
+    return tj;
+  };
+  parallel_of_joint_.assign(asset.joints.size(), -1);
   const auto grow = [&](int root) {
     roots_.push_back(root);
     visited[static_cast<std::size_t>(root)] = true;
@@ -247,30 +274,16 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
         const Edge& edge = edges[static_cast<std::size_t>(e)];
         const bool forward = edge.a == at;
         const int next = forward ? edge.b : edge.a;
-        if (visited[static_cast<std::size_t>(next)]) continue;  // a loop-closing joint: not in the tree
-        visited[static_cast<std::size_t>(next)] = true;
-        TreeJoint tj;
-        tj.joint = edge.joint;
-        tj.parent = at;
-        tj.child = next;
-        tj.armature = edge.joint->armature ? edge.joint->armature->value : 0.0;
-        tj.modelled = !is_multi_dof(edge.joint->type);
-        // The joint frame in each body; the world side needs none (it does not move).
-        const auto frame_in = [&](int body, int which) {
-          const int link = side_index(*edge.joint, which);
-          const Eigen::Isometry3d& f = edge.joint->frame_in_link[static_cast<std::size_t>(which)];
-          return body == world || link < 0 ? f : link_pose[static_cast<std::size_t>(link)] * f;
-        };
-        const Eigen::Isometry3d in_parent = frame_in(at, forward ? 0 : 1);
-        const Eigen::Isometry3d in_child = frame_in(next, forward ? 1 : 0);
-        tj.child_in_parent = in_parent * in_child.inverse();
-        const Eigen::Vector3d axis = (in_child.linear() * edge.joint->axis).normalized();
-        if (edge.joint->type == JointType::Prismatic) {
-          tj.motion.tail<3>() = axis;
-        } else {
-          tj.motion.head<3>() = axis;
-          tj.motion.tail<3>() = in_child.translation().cross(axis);
+        TreeJoint tj = make_tree_joint(edge.joint, at, next, forward);
+        if (visited[static_cast<std::size_t>(next)]) {  // a loop-closing joint: not in the tree
+          const int into = joint_into_[static_cast<std::size_t>(next)];
+          if (into >= 0 && tree_[static_cast<std::size_t>(into)].parent == at) {
+            parallel_of_joint_[*asset.index_of(*edge.joint)] = static_cast<int>(parallel_.size());
+            parallel_.push_back(tj);
+          }
+          continue;
         }
+        visited[static_cast<std::size_t>(next)] = true;
         tree_of_joint_[*asset.index_of(*edge.joint)] = static_cast<int>(tree_.size());
         joint_into_[static_cast<std::size_t>(next)] = static_cast<int>(tree_.size());
         tree_.push_back(tj);
@@ -372,13 +385,12 @@ void Articulation::solve_joint_space() {
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     if (bodies_[b].world) continue;
     if (bodies_[b].mass_known) composite[b] = spatial_inertia(bodies_[b].mass, bodies_[b].com, bodies_[b].inertia);
+    if (bodies_[b].massless) continue;  // adds nothing
     for (const auto& name : bodies_[b].unknown_links)
       if (missing[b].size() < kNamesKept) missing[b].push_back(name);
   }
-  for (std::size_t k = tree_.size(); k-- > 0;) {
-    const TreeJoint& j = tree_[k];
-    const std::size_t p = static_cast<std::size_t>(j.parent), c = static_cast<std::size_t>(j.child);
-    ArticulatedInertia& result = joint_space_[k];
+  const auto diagonal = [&](const TreeJoint& j, ArticulatedInertia& result) {
+    const std::size_t c = static_cast<std::size_t>(j.child);
     if (!missing[c].empty()) {
       result.unknown_links = missing[c];
     } else if (const double value = j.motion.dot(composite[c] * j.motion) + j.armature; value > 0) {
@@ -388,18 +400,28 @@ void Articulation::solve_joint_space() {
     } else {
       result.reason = j.modelled ? "the bodies it moves have no mass" : "a multi-DOF joint";
     }
+  };
+  for (std::size_t k = tree_.size(); k-- > 0;) {
+    const TreeJoint& j = tree_[k];
+    const std::size_t p = static_cast<std::size_t>(j.parent), c = static_cast<std::size_t>(j.child);
+    diagonal(j, joint_space_[k]);
     if (bodies_[p].world) continue;
     const Matrix6 x = motion_transform(j.child_in_parent);
     composite[p] += x.transpose() * composite[c] * x;
     for (const auto& name : missing[c])
       if (missing[p].size() < kNamesKept) missing[p].push_back(name);
   }
+  // Composites are complete now: the joints parallel to a tree joint see the same child.
+  parallel_space_.assign(parallel_.size(), {});
+  for (std::size_t k = 0; k < parallel_.size(); ++k) diagonal(parallel_[k], parallel_space_[k]);
 }
 
 ArticulatedInertia Articulation::joint_space_inertia(const Joint& joint) const {
   const auto i = asset_->index_of(joint);
   if (i && *i < tree_of_joint_.size() && tree_of_joint_[*i] >= 0)
     return joint_space_[static_cast<std::size_t>(tree_of_joint_[*i])];
+  if (i && *i < parallel_of_joint_.size() && parallel_of_joint_[*i] >= 0)
+    return parallel_space_[static_cast<std::size_t>(parallel_of_joint_[*i])];
   ArticulatedInertia none;
   none.reason = "the joint is not part of the articulation's tree";
   return none;

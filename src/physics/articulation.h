@@ -26,6 +26,7 @@ struct Body {
   Eigen::Vector3d com = Eigen::Vector3d::Zero();
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // about the COM
   std::vector<std::string> unknown_links;  // links whose mass, inertia or COM is not authored
+  bool massless = false;                   // every link states its mass and they sum to 0 (also in unknown_links)
   std::string name() const;                // the first link's name
 };
 
@@ -73,7 +74,9 @@ class Articulation {
   // Mᵢᵢ, the joint-space mass matrix's diagonal at q = 0 with the joint's armature: the
   // inertia of everything distal to the joint about its axis, every other joint held. It is
   // MuJoCo's dof_M0, the inertia `dampratio` is computed on. Known when every body distal to
-  // the joint has mass; a multi-DOF joint among them counts as held. O(n) for all joints.
+  // the joint has mass; a multi-DOF joint among them counts as held, a massless body (MuJoCo
+  // allows one inside a chain) adds nothing. Joints that share their parent and child body
+  // (several joints in one MJCF body) each get theirs. O(n) for all joints.
   ArticulatedInertia joint_space_inertia(const Joint& joint) const;
 
   // Jᵀ·M·J: the inertia of the motion in which each listed joint moves at its rate (per unit
@@ -107,6 +110,11 @@ class Articulation {
   int body_index(const Link* link) const;           // -1 for none
   std::vector<ArticulatedInertia> results_;         // per tree_ entry
   std::vector<ArticulatedInertia> joint_space_;     // per tree_ entry: Mᵢᵢ
+  // Joints parallel to a tree joint (the same parent and child body): not in the tree, but
+  // each has its own Mᵢᵢ.
+  std::vector<TreeJoint> parallel_;
+  std::vector<int> parallel_of_joint_;              // per joint: its parallel_ entry, or -1
+  std::vector<ArticulatedInertia> parallel_space_;  // per parallel_ entry: Mᵢᵢ
   void solve_joint_space();
 };
 

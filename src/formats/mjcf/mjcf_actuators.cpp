@@ -30,11 +30,11 @@ struct Param {
 struct Params {
   Param gain = Param::fixed(1.0);
   Param bias_position;  // biasprm[1] = −kp
-  Param bias_velocity;  // biasprm[2] = −kv
+  Param bias_velocity;  // −biasprm[2]: kv, or −ζ when the slot holds a damping ratio
   bool affine = false;
   std::string gaintype = "fixed";
   Param gear = Param::fixed(1.0);
-  Attr forcerange, ctrlrange, dampratio;
+  Attr forcerange, ctrlrange;
   std::optional<bool> forcelimited, ctrllimited;
 };
 
@@ -70,8 +70,17 @@ void apply(const XMLElement* el, Params& p, Values& values) {
   } else if (tag == "position") {
     if (Attr a = own(el, "kp"); a && values.numbers(a, "kp", 1)) p.gain = token_param(a, "kp", 0, 1.0);
     p.bias_position = p.gain;  // biasprm[1] = −kp, read as the stiffness kp
-    if (Attr a = own(el, "kv"); a && values.numbers(a, "kv", 1)) p.bias_velocity = token_param(a, "kv", 0, 1.0);
-    if (Attr a = own(el, "dampratio")) p.dampratio = a;
+    const Attr kv = own(el, "kv"), dampratio = own(el, "dampratio");
+    if (kv && dampratio) {
+      values.error(values.value_span(dampratio, "dampratio"), "<position>: kv and dampratio cannot both be defined")
+          .note("MuJoCo refuses to compile the model: both write the actuator's velocity gain.");
+    } else if (kv && values.numbers(kv, "kv", 1)) {
+      if (Param v = token_param(kv, "kv", 0, 1.0); v.value >= 0) p.bias_velocity = v;
+      else values.error(values.value_span(kv, "kv"), "<position kv>: must not be negative");
+    } else if (dampratio && values.numbers(dampratio, "dampratio", 1)) {
+      if (Param v = token_param(dampratio, "dampratio", 0, -1.0); v.value <= 0) p.bias_velocity = v;
+      else values.error(values.value_span(dampratio, "dampratio"), "<position dampratio>: must not be negative");
+    }
     p.affine = true;
     p.gaintype = "fixed";
   } else if (tag == "motor") {
@@ -105,7 +114,7 @@ Joint* joint_named(Asset& asset, std::string_view name) {
 }  // namespace
 
 void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler,
-                   const FixedTendons& tendons, Values& values, Asset& asset) {
+                   const FixedTendons& tendons, Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios) {
   const std::string_view tag = el->Name();
   const char* cls = el->Attribute("class");
   if (cls && !defaults.has_class(cls)) {
@@ -163,23 +172,27 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
     drive.span = values.element_span(el);
     drive.type_span = drive.span;
     drive.stiffness = quantity(p.bias_position, angular ? Unit::NewtonMeterPerRadian : Unit::NewtonPerMeter, g * g, values);
-    if (p.bias_velocity.attr || p.bias_velocity.value != 0)
-      drive.damping = quantity(p.bias_velocity, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter,
-                               g * g, values);
-    // MuJoCo damps the joint with the actuator's kv and the joint's own damping alike.
-    if (joint->joint_damping && joint->joint_damping->value > 0) {
-      if (!drive.damping || drive.damping->value == 0) {
-        drive.damping = joint->joint_damping;
-      } else {
-        // Two literals make up the damping: no single one to rewrite.
-        drive.damping = Quantity::unauthored(drive.damping->value + joint->joint_damping->value, drive.damping->unit);
+    // MuJoCo (mj_setConst) reads a positive biasprm[2] of a position-like actuator as a
+    // damping ratio; kv follows from the inertia once the whole model is read.
+    const bool position_like = p.gain.value == p.bias_position.value;
+    const bool damp_ratio = p.bias_velocity.name && std::string_view(p.bias_velocity.name) == "dampratio";
+    if (damp_ratio || (position_like && p.bias_velocity.value < 0)) {
+      // The joint's own damping is added to the derived kv then.
+      damp_ratios.push_back({static_cast<std::size_t>(joint - asset.joints.data()), -p.bias_velocity.value, p.gain.value, g,
+                             values.token_span(p.bias_velocity.attr, p.bias_velocity.name, p.bias_velocity.token), label});
+    } else {
+      if (p.bias_velocity.attr || p.bias_velocity.value != 0)
+        drive.damping = quantity(p.bias_velocity, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter,
+                                 g * g, values);
+      // MuJoCo damps the joint with the actuator's kv and the joint's own damping alike.
+      if (joint->joint_damping && joint->joint_damping->value > 0) {
+        if (!drive.damping || drive.damping->value == 0) {
+          drive.damping = joint->joint_damping;
+        } else {
+          // Two literals make up the damping: no single one to rewrite.
+          drive.damping = Quantity::unauthored(drive.damping->value + joint->joint_damping->value, drive.damping->unit);
+        }
       }
-    }
-    if (p.dampratio) {
-      drive.damping.reset();
-      drive.damping_unknown = fmt::format("{} gives its damping as dampratio, which asset-lint does not convert to kv", label);
-      values.unsupported(values.value_span(p.dampratio, "dampratio"), fmt::format("{}: damping given as dampratio", label))
-          .note("MuJoCo derives kv from the mass matrix at the reference pose; the drive's damping is left unknown.");
     }
     if (force_limited && p.forcerange) drive.max_force = range_bound(p.forcerange, "forcerange", force_unit, std::abs(g), values);
     joint->drive = std::move(drive);

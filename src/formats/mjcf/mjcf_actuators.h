@@ -2,6 +2,10 @@
 // MJCF actuators as drives. Every actuator kind is a `general` actuator underneath
 // (force = gain·ctrl + bias); the shortcuts set its parameters:
 //   <position kp kv>: gainprm = kp, biasprm = (0, −kp, −kv), biastype affine
+//   <position dampratio=ζ>: biasprm[2] = +ζ; on a position-like actuator (gainprm[0] =
+//     −biasprm[1]) MuJoCo reads a positive biasprm[2] as a damping ratio and compiles it to
+//     kv = 2ζ·√(kp·M₀/g²) (mjcf_dampratio.h). kv and dampratio write the same slot: the
+//     class chain, then the element, each overwrites it.
 //   <motor>:          gainprm = 1, no bias
 // A joint-transmission actuator with gear g moves the joint with g²·kp per radian
 // (length = g·q, force on the joint = g·force): stiffness = −biasprm[1]·g²,
@@ -22,9 +26,20 @@ namespace assetlint::mjcf {
 // <tendon><fixed name="t"><joint joint="j" coef="c"/>…: the joints each fixed tendon moves.
 using FixedTendons = std::unordered_map<std::string, std::vector<std::string>>;
 
+// A servo whose kv MuJoCo derives from a damping ratio once the model is compiled.
+struct DampRatio {
+  std::size_t joint = 0;  // index into asset.joints; its drive's damping is left unset
+  double ratio = 0;       // ζ
+  double kp = 0;          // the actuator's gain (gainprm[0])
+  double gear = 1;        // joint transmission ratio g
+  Span span;              // the literal holding ζ
+  std::string label;      // "actuator 'x'"
+};
+
 // Reads one actuator element onto the joint it names (already in `asset`), and marks every
-// joint it moves, directly or through a fixed tendon, as actuated.
+// joint it moves, directly or through a fixed tendon, as actuated. A servo damped by a damping
+// ratio is appended to `damp_ratios` for the pass after the whole model is read.
 void read_actuator(const tinyxml2::XMLElement* el, const Defaults& defaults, const Compiler& compiler,
-                   const FixedTendons& tendons, Values& values, Asset& asset);
+                   const FixedTendons& tendons, Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios);
 
 }  // namespace assetlint::mjcf

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "formats/mjcf/mjcf_actuators.h"
+#include "formats/mjcf/mjcf_dampratio.h"
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_values.h"
 #include "formats/xml/xml_scanner.h"
@@ -63,6 +64,7 @@ class Reader {
     // An actuator on a spatial tendon, a site or a body moves joints the model does not name
     // (a tendon-driven hand's finger joints): then no joint can be called passive.
     bool unnamed_transmission = false;
+    std::vector<DampRatio> damp_ratios;
     for (const XMLElement* el : sections) {
       const std::string_view tag = el->Name();
       if (tag == "equality") {
@@ -70,7 +72,7 @@ class Reader {
           if (std::string_view(c->Name()) == "joint") joint_equalities.push_back(c);
       } else if (tag == "actuator") {
         for (const XMLElement* c : sources_.children(el)) {
-          read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset);
+          read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset, damp_ratios);
           const char* tendon = c->Attribute("tendon");
           if ((tendon && !tendons.contains(tendon)) || c->Attribute("site") || c->Attribute("body") ||
               c->Attribute("cranksite"))
@@ -85,6 +87,8 @@ class Reader {
     // After the actuators: which side of a coupling is driven decides which one follows.
     for (const XMLElement* el : joint_equalities) read_equality_joint(el);
     result_.asset.index_names();  // after the equalities: they make the mimics
+    // Once the whole tree is known: MuJoCo derives kv from dampratio and the inertia at qpos0.
+    derive_dampratio_damping(damp_ratios, values_, result_.asset);
     result_.asset.inherited_literals = values_.inherited_literals();
     // Equalities are read after the actuators; report in document order all the same.
     std::stable_sort(result_.diagnostics.begin(), result_.diagnostics.end(), [](const auto& a, const auto& b) {
@@ -194,11 +198,15 @@ class Reader {
     link.span = values_.element_span(el);
     const Eigen::Isometry3d body_pose = pose(el, compiler_, values_);
     std::size_t joints = 0;
+    bool geoms = false;
     for (const XMLElement* c : sources_.children(el)) {
       const std::string_view tag = c->Name();
       if (tag == "inertial") read_inertial(c, link);
       else if (tag == "joint" || tag == "freejoint") joints += read_joint(c, link.name.text, parent, body_pose, cls);
+      else if (tag == "geom") geoms = true;
     }
+    // Without <inertial> (or when the compiler ignores it) MuJoCo sums the geoms' mass and inertia.
+    link.mass_from_geoms = geoms && !link.inertial;
     if (joints == 0) {
       Joint weld;
       weld.name = Name{link.name.text + " (welded)", link.name.span};

@@ -1,0 +1,256 @@
+// Compiles MJCF models with MuJoCo itself (npm mujoco-js: MuJoCo 3.3 compiled to WASM) and
+// prints, as JSON, what its compiler made of them: per joint its range, damping, armature and
+// joint-space inertia at qpos0; per actuator its gains, gear and ranges; the joint equalities.
+//
+//   node compile.mjs <mujoco-js package dir> <model.xml>...
+//
+// Each model and the files it <include>s are written into MuJoCo's in-memory file system at
+// their paths relative to the model. Mesh and texture files that are absent (public models are
+// often checked without their assets) are replaced by stand-ins: a cube for a mesh, one pixel
+// for a texture. A stand-in mesh changes nothing this script reports as long as the body that
+// holds it states its own <inertial> (MuJoCo then ignores geom inertia). Where a body's mass
+// comes from its geoms and one of them is a stand-in, every quantity that depends on it (the
+// joint-space inertia of the joints moving it, a kv derived from dampratio) is reported as
+// excluded, with the body named, instead of a number.
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { pathToFileURL } from 'node:url';
+
+const [packageDir, ...models] = process.argv.slice(2);
+if (!packageDir || models.length === 0) {
+  console.error('usage: node compile.mjs <mujoco-js package dir> <model.xml>...');
+  process.exit(2);
+}
+const load = (await import(pathToFileURL(path.join(packageDir, 'dist', 'mujoco_wasm.js')).href)).default;
+const mj = await load();
+
+// The <include file=...> names in a text (MuJoCo resolves them against the model's directory).
+function includes(text) {
+  return [...text.matchAll(/<include\b[^>]*\bfile\s*=\s*"([^"]*)"/g)].map((m) => m[1]);
+}
+
+// The model with every <include> replaced by the children of the included file's root, for
+// MuJoCo's string parser, which cannot open files; and the files it read, relative to `dir`.
+function inline(file, dir, read = new Set()) {
+  const text = fs.readFileSync(file, 'utf8');
+  read.add(path.relative(dir, file));
+  const flat = text.replace(/<include\b[^>]*\bfile\s*=\s*"([^"]*)"[^>]*\/>/g, (_, name) => {
+    const inner = inline(path.resolve(dir, name), dir, read).text;
+    const body = inner.replace(/<\?xml[^>]*>/, '').replace(/<!--[\s\S]*?-->/g, '');
+    const open = body.match(/<mujoco\b[^>]*>/);
+    if (!open) return '';
+    return body.slice(open.index + open[0].length, body.lastIndexOf('</mujoco>'));
+  });
+  return { text: flat, read };
+}
+
+// A closed cube of side 1 (large enough to keep a volume after a mesh scale of 0.001): binary STL, OBJ.
+const cube = (() => {
+  const v = [];
+  for (const x of [-1, 1]) for (const y of [-1, 1]) for (const z of [-1, 1]) v.push([x * 0.5, y * 0.5, z * 0.5]);
+  const faces = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                 [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]];
+  const stl = Buffer.alloc(84 + 50 * faces.length);
+  stl.writeUInt32LE(faces.length, 80);
+  faces.forEach((f, i) => {
+    f.forEach((vi, k) => v[vi].forEach((c, a) => stl.writeFloatLE(c, 84 + 50 * i + 12 + 12 * k + 4 * a)));
+  });
+  const obj = v.map((p) => `v ${p.join(' ')}`).concat(faces.map((f) => `f ${f.map((i) => i + 1).join(' ')}`)).join('\n');
+  return { stl, obj: Buffer.from(obj + '\n') };
+})();
+// An 8×8 white PNG.
+const pixel = (() => {
+  const crcTable = Array.from({ length: 256 }, (_, n) => {
+    let c = n;
+    for (let k = 0; k < 8; ++k) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+    return c >>> 0;
+  });
+  const crc = (bytes) => {
+    let c = 0xffffffff;
+    for (const b of bytes) c = crcTable[(c ^ b) & 0xff] ^ (c >>> 8);
+    return (c ^ 0xffffffff) >>> 0;
+  };
+  const chunk = (type, data) => {
+    const body = Buffer.concat([Buffer.from(type, 'ascii'), data]);
+    const out = Buffer.alloc(body.length + 8);
+    out.writeUInt32BE(data.length, 0);
+    body.copy(out, 4);
+    out.writeUInt32BE(crc(body), body.length + 4);
+    return out;
+  };
+  const header = Buffer.alloc(13);
+  header.writeUInt32BE(8, 0);
+  header.writeUInt32BE(8, 4);
+  header[8] = 8;  // bit depth
+  header[9] = 2;  // RGB
+  const rows = Buffer.alloc(8 * (1 + 8 * 3), 0xff);
+  for (let r = 0; r < 8; ++r) rows[r * 25] = 0;  // filter: none
+  return Buffer.concat([Buffer.from('89504e470d0a1a0a', 'hex'), chunk('IHDR', header),
+                        chunk('IDAT', zlib.deflateSync(rows)), chunk('IEND', Buffer.alloc(0))]);
+})();
+
+function mkdirs(dir) {
+  let at = '';
+  for (const part of dir.split('/').filter(Boolean)) {
+    at += '/' + part;
+    try { mj.FS.mkdir(at); } catch { /* exists */ }
+  }
+}
+function put(file, bytes) {
+  mkdirs(path.posix.dirname(file));
+  mj.FS.writeFile(file, bytes);
+}
+
+function* elements(spec, type) {
+  for (let e = mj.mjs_firstElement(spec, type); e; e = mj.mjs_nextElement(spec, e)) yield e;
+}
+
+// MuJoCo's compiler errors arrive as C++ exceptions; their text is in the module.
+function describe(err) {
+  if (mj.getExceptionMessage && err?.excPtr !== undefined) {
+    try { return mj.getExceptionMessage(err).filter(Boolean).join(': '); } catch { /* fall through */ }
+  }
+  return String(err?.message ?? err);
+}
+
+let run = 0;
+function compile(modelPath) {
+  const dir = path.dirname(path.resolve(modelPath));
+  const { text, read } = inline(path.resolve(modelPath), dir);
+  const root = `/run${run++}`;
+  for (const rel of read) put(path.posix.join(root, rel), fs.readFileSync(path.resolve(dir, rel)));
+
+  const spec = mj.parseXMLString(text);
+  const compiler = spec.compiler;
+  const assetDir = (kind) => (kind === 'mesh' ? compiler.meshdir : compiler.texturedir) || '';
+  const standins = [];
+  const standinMeshes = new Set();
+  const supply = (kind, name, file) => {
+    if (!file) return;
+    const rel = path.join(assetDir(kind), spec.strippath ? path.basename(file) : file);
+    const onDisk = path.resolve(dir, rel);
+    const inFs = path.posix.join(root, rel);
+    if (fs.existsSync(onDisk)) { put(inFs, fs.readFileSync(onDisk)); return; }
+    const ext = path.extname(file).toLowerCase();
+    put(inFs, kind === 'texture' ? pixel : ext === '.obj' ? cube.obj : cube.stl);
+    standins.push(rel);
+    if (kind === 'mesh') standinMeshes.add(name);
+  };
+  for (const e of elements(spec, mj.mjtObj.mjOBJ_MESH)) supply('mesh', mj.mjs_getName(e), mj.mjs_asMesh(e).file);
+  for (const e of elements(spec, mj.mjtObj.mjOBJ_TEXTURE)) supply('texture', mj.mjs_getName(e), mj.mjs_asTexture(e).file);
+
+  // Bodies (document order = the compiled model's body order) whose mass properties MuJoCo
+  // takes from their geoms, and which of those hold a stand-in mesh.
+  const fromGeoms = compiler.inertiafromgeom === 1;  // mjINERTIAFROMGEOM_TRUE
+  const guessed = [];
+  for (const e of elements(spec, mj.mjtObj.mjOBJ_BODY)) {
+    const body = mj.mjs_asBody(e);
+    let standin = false;
+    if (fromGeoms || !body.explicitinertial) {
+      for (let g = mj.mjs_firstChild(body, mj.mjtObj.mjOBJ_GEOM, 0); g; g = mj.mjs_nextChild(body, g, 0))
+        if (standinMeshes.has(mj.mjs_asGeom(g).meshname)) standin = true;
+    }
+    guessed.push(standin);
+  }
+  spec.delete();
+
+  let m;
+  try {
+    m = mj.MjModel.loadFromXML(path.posix.join(root, path.basename(modelPath)));
+  } catch (err) {
+    return { model: modelPath, error: describe(err) };
+  }
+  if (!m) return { model: modelPath, error: 'MuJoCo returned no model' };
+  const d = new mj.MjData(m);
+  mj.mj_forward(m, d);
+  const name = (type, id) => mj.mj_id2name(m, type.value, id) || null;
+  const O = mj.mjtObj;
+
+  // A body's subtree holds a body whose inertia came from a stand-in mesh.
+  const tainted = new Array(m.nbody).fill(false);
+  if (guessed.length === m.nbody) {
+    for (let b = m.nbody - 1; b > 0; --b) {
+      if (guessed[b]) tainted[b] = true;
+      if (tainted[b]) tainted[m.body_parentid[b]] = true;
+    }
+  }
+  const guessedBodies = guessed.map((g, b) => (g ? name(O.mjOBJ_BODY, b) ?? `#${b}` : null)).filter((x) => x !== null);
+  const jointNames = ['free', 'ball', 'slide', 'hinge'];
+  const joints = [];
+  for (let j = 0; j < m.njnt; ++j) {
+    const type = m.jnt_type[j];
+    const ndof = [6, 3, 1, 1][type];
+    const body = m.jnt_bodyid[j];
+    const dofs = [];
+    for (let k = 0; k < ndof; ++k) {
+      const i = m.jnt_dofadr[j] + k;
+      dofs.push({
+        damping: m.dof_damping[i],
+        armature: m.dof_armature[i],
+        M0: tainted[body] ? null : m.dof_M0[i],
+        qM: tainted[body] ? null : d.qM[m.dof_Madr[i]],
+      });
+    }
+    joints.push({
+      index: j,
+      name: name(O.mjOBJ_JOINT, j),
+      type: jointNames[type],
+      body: name(O.mjOBJ_BODY, body),
+      limited: m.jnt_limited[j] === 1,
+      range: [m.jnt_range[2 * j], m.jnt_range[2 * j + 1]],
+      stiffness: m.jnt_stiffness[j],
+      dofs,
+      inertia_excluded: tainted[body] ? 'a body it moves takes its mass from a stand-in mesh' : null,
+    });
+  }
+  const trnNames = ['joint', 'jointinparent', 'slidercrank', 'tendon', 'site', 'body'];
+  const actuators = [];
+  for (let a = 0; a < m.nu; ++a) {
+    const trn = m.actuator_trntype[a];
+    const target = m.actuator_trnid[2 * a];
+    const jointTrn = trn === 0 || trn === 1;
+    const prm = (arr, n) => Array.from(arr.slice(n * a, n * a + 3));
+    const kvExcluded = jointTrn && tainted[m.jnt_bodyid[target]];
+    actuators.push({
+      index: a,
+      name: name(O.mjOBJ_ACTUATOR, a),
+      transmission: trnNames[trn] ?? String(trn),
+      joint: jointTrn ? target : null,
+      gear: m.actuator_gear[6 * a],
+      gaintype: m.actuator_gaintype[a],
+      biastype: m.actuator_biastype[a],
+      gainprm: prm(m.actuator_gainprm, 10),
+      biasprm: kvExcluded ? null : prm(m.actuator_biasprm, 10),
+      forcelimited: m.actuator_forcelimited[a] === 1,
+      forcerange: [m.actuator_forcerange[2 * a], m.actuator_forcerange[2 * a + 1]],
+      ctrllimited: m.actuator_ctrllimited[a] === 1,
+      ctrlrange: [m.actuator_ctrlrange[2 * a], m.actuator_ctrlrange[2 * a + 1]],
+      kv_excluded: kvExcluded ? 'the joint moves a body that takes its mass from a stand-in mesh' : null,
+    });
+  }
+  const equalities = [];
+  for (let e = 0; e < m.neq; ++e) {
+    if (m.eq_type[e] !== 2) continue;  // mjEQ_JOINT
+    equalities.push({
+      index: e,
+      joint1: m.eq_obj1id[e],
+      joint2: m.eq_obj2id[e],  // -1: none
+      active: m.eq_active0[e] === 1,
+      polycoef: Array.from(m.eq_data.slice(11 * e, 11 * e + 5)),
+    });
+  }
+  d.delete();
+  m.delete();
+  return { model: modelPath, error: null, standins, guessed_inertia_bodies: guessedBodies, joints, actuators, equalities };
+}
+
+const out = { mujoco: mj.mj_versionString(), models: [] };
+for (const model of models) {
+  try {
+    out.models.push(compile(model));
+  } catch (err) {
+    out.models.push({ model, error: describe(err) });
+  }
+}
+process.stdout.write(JSON.stringify(out, null, 1) + '\n');
