@@ -25,7 +25,9 @@
 
 #include "engine/file_system.h"
 #include "formats/mjcf/mjcf_reader.h"
+#include "engine/settings.h"
 #include "physics/articulation.h"
+#include "pipeline/lint.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -74,7 +76,9 @@ std::vector<fs::path> models_under(const fs::path& root) {
   return found;
 }
 
-bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+bool close(double a, double b, double tolerance = 1e-9) {
+  return a == b || std::abs(a - b) <= tolerance * std::max(std::abs(a), std::abs(b));
+}
 
 std::string number(double v) { return fmt::format("{:.12g}", v); }
 
@@ -84,11 +88,12 @@ struct Comparison {
   std::map<std::string, int> compared;             // per kind of value: how many agreed or not
   std::map<std::string, std::vector<std::string>> deliberate;  // reason -> elements
 
-  void value(const std::string& kind, const std::string& element, double mujoco, std::optional<double> ours) {
+  void value(const std::string& kind, const std::string& element, double mujoco, std::optional<double> ours,
+             double tolerance = 1e-9) {
     ++compared[kind];
     if (!ours) {
       differences.push_back(fmt::format("{}: {} {}: MuJoCo {}, asset-lint none", model, element, kind, number(mujoco)));
-    } else if (!close(mujoco, *ours)) {
+    } else if (!close(mujoco, *ours, tolerance)) {
       differences.push_back(
           fmt::format("{}: {} {}: MuJoCo {}, asset-lint {}", model, element, kind, number(mujoco), number(*ours)));
     }
@@ -108,7 +113,15 @@ constexpr const char* kGeomInertia =
 constexpr const char* kStandIn = "quantities depending on a mesh file absent here (MuJoCo compiled a stand-in)";
 constexpr const char* kMultiDof = "ball and free joints' own dofs (asset-lint's drive rules judge single-dof joints)";
 constexpr const char* kTransmission = "actuators acting through a tendon, site or body (only joint transmissions are modelled)";
-constexpr const char* kSecondServo = "a second servo on a joint (the first is the drive the rules judge)";
+constexpr const char* kSecondServo = "a second servo or motor on one joint (the first is what the rules judge)";
+constexpr const char* kReversed =
+    "a range written upper bound first under limited=\"auto\": MuJoCo drops the limit, asset-lint keeps the range so "
+    "that limits-inverted reports it";
+constexpr const char* kDiagonalised =
+    "joint-space inertia through a body with fullinertia, compared at 1e-5: MuJoCo diagonalises the tensor numerically "
+    "(mju_eig3), exact to about 1e-6 relative";
+constexpr const char* kMissingInclude =
+    "a model whose <include> is missing: MuJoCo refuses it, asset-lint reports layer-unresolved and checks the rest";
 constexpr const char* kKind = "actuators other than position-like servos and motors (velocity, damper, muscle, …)";
 
 // Unknown only because bodies it moves take their mass from geoms.
@@ -124,10 +137,16 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
   const DiskFileSystem disk;
   const ReadResult read = mjcf::read_mjcf(std::make_shared<const SourceFile>(path.string(), read_file(path)), disk);
   if (!compiled["error"].is_null()) {
-    const bool refused = std::any_of(read.diagnostics.begin(), read.diagnostics.end(),
+    // What MuJoCo refuses to compile, asset-lint reports as an error (reader or rule).
+    const FileReport report = lint_file(path.string(), Settings{});
+    const bool refused = std::any_of(report.diagnostics.begin(), report.diagnostics.end(),
                                      [](const Diagnostic& d) { return d.severity == Severity::Error; });
     ++c.compared["refused"];
-    if (!refused)
+    const bool missing_include = std::any_of(report.diagnostics.begin(), report.diagnostics.end(),
+                                             [](const Diagnostic& d) { return d.rule == "layer-unresolved"; });
+    if (!refused && missing_include)
+      c.skip(kMissingInclude, "the model");
+    else if (!refused)
       c.differences.push_back(fmt::format("{}: MuJoCo refuses the model ({}), asset-lint reports no error", c.model,
                                           compiled["error"].get<std::string>()));
     return;
@@ -162,7 +181,9 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
       c.skip(kMultiDof, element);
       continue;
     }
-    if (mj["limited"].get<bool>()) {
+    if (!mj["limited"].get<bool>() && joint.lower && joint.upper && joint.lower->value > joint.upper->value) {
+      c.skip(kReversed, element);
+    } else if (mj["limited"].get<bool>()) {
       c.value("range lower", element, mj["range"][0], joint.lower ? std::optional(joint.lower->value) : std::nullopt);
       c.value("range upper", element, mj["range"][1], joint.upper ? std::optional(joint.upper->value) : std::nullopt);
     } else {
@@ -177,12 +198,16 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
     } else if (!inertia.known && from_geoms(asset, inertia)) {
       c.skip(kGeomInertia, element + " M0");
     } else {
-      c.value("M0", element, dof["M0"], inertia.known ? std::optional(inertia.value) : std::nullopt);
+      const bool diagonalised = mj["inertia_diagonalised"].get<bool>();
+      if (diagonalised) c.skip(kDiagonalised, element);
+      c.value("M0", element, dof["M0"], inertia.known ? std::optional(inertia.value) : std::nullopt,
+              diagonalised ? 1e-5 : 1e-9);
     }
   }
 
   // Actuators on a joint: the first servo per joint is its drive; motors bound its effort.
   std::map<const Joint*, bool> driven;
+  std::map<const Joint*, std::optional<double>> effort_bound;
   for (const auto& a : compiled["actuators"]) {
     const std::string element =
         a["name"].is_null() ? fmt::format("actuator #{}", a["index"].get<int>()) : fmt::format("actuator '{}'", a["name"].get<std::string>());
@@ -205,7 +230,21 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
     const auto force_bound = [&](const nlohmann::json& range, double scale) {
       return std::max(std::abs(range[0].get<double>()), std::abs(range[1].get<double>())) * scale;
     };
-    if (servo) {
+    if (!servo) {  // a motor: force = gain·ctrl, clamped by the force range
+      if (driven[&joint] || joints[a["joint"].get<std::size_t>()]["actfrclimited"].get<bool>()) continue;
+      if (effort_bound.count(&joint)) {
+        c.skip(kSecondServo, element);
+        continue;
+      }
+      std::optional<double> bound;
+      if (a["forcelimited"].get<bool>()) bound = force_bound(a["forcerange"], std::abs(g));
+      else if (a["ctrllimited"].get<bool>()) bound = force_bound(a["ctrlrange"], std::abs(g * a["gainprm"][0].get<double>()));
+      effort_bound[&joint] = bound;
+      if (bound) c.value("effort (motor)", element, *bound, joint.effort ? std::optional(joint.effort->value) : std::nullopt);
+      else c.absent("effort (motor)", element, joint.effort);
+      continue;
+    }
+    {
       if (a["biasprm"].is_null()) {
         c.skip(kStandIn, element + " kv");
         continue;
@@ -228,7 +267,9 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
       c.value("stiffness", element, stiffness, drive.stiffness ? std::optional(drive.stiffness->value) : std::nullopt);
       const double joint_damping = value_of(joint.joint_damping);
       if (drive.damping_unknown.empty()) {
-        c.value("damping (kv·g² + joint damping)", element, kv * g * g + joint_damping, value_of(drive.damping));
+        const bool diagonalised = joints[a["joint"].get<std::size_t>()]["inertia_diagonalised"].get<bool>();
+        c.value("damping (kv·g² + joint damping)", element, kv * g * g + joint_damping, value_of(drive.damping),
+                diagonalised ? 1e-5 : 1e-9);
       } else if (from_geoms(asset, articulation.joint_space_inertia(joint))) {
         c.skip(kGeomInertia, element + " kv");
       } else {

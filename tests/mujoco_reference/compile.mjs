@@ -143,9 +143,12 @@ function compile(modelPath) {
   // Bodies (document order = the compiled model's body order) whose mass properties MuJoCo
   // takes from their geoms, and which of those hold a stand-in mesh.
   const fromGeoms = compiler.inertiafromgeom === 1;  // mjINERTIAFROMGEOM_TRUE
-  const guessed = [];
+  // Bodies whose <inertial> gives a full tensor: MuJoCo diagonalises it numerically
+  // (mju_eig3), which is exact only to about 1e-6 relative.
+  const guessed = [], diagonalised = [];
   for (const e of elements(spec, mj.mjtObj.mjOBJ_BODY)) {
     const body = mj.mjs_asBody(e);
+    diagonalised.push(body.explicitinertial === 1 && !fromGeoms && !Number.isNaN(body.fullinertia[0]));
     let standin = false;
     if (fromGeoms || !body.explicitinertial) {
       for (let g = mj.mjs_firstChild(body, mj.mjtObj.mjOBJ_GEOM, 0); g; g = mj.mjs_nextChild(body, g, 0))
@@ -164,15 +167,23 @@ function compile(modelPath) {
   if (!m) return { model: modelPath, error: 'MuJoCo returned no model' };
   const d = new mj.MjData(m);
   mj.mj_forward(m, d);
-  const name = (type, id) => mj.mj_id2name(m, type.value, id) || null;
-  const O = mj.mjtObj;
+  // Names straight from the model's name buffer (an unnamed element has an empty one).
+  const names = Uint8Array.from(m.names, (b) => b & 0xff);
+  const nameAt = (adr) => {
+    const end = names.indexOf(0, adr);
+    return end > adr ? Buffer.from(names.subarray(adr, end)).toString('utf8') : null;
+  };
+  const name = (kind, id) => nameAt(m[`name_${kind}adr`][id]);
+  const O = { mjOBJ_BODY: 'body', mjOBJ_JOINT: 'jnt', mjOBJ_ACTUATOR: 'actuator' };
 
   // A body's subtree holds a body whose inertia came from a stand-in mesh.
-  const tainted = new Array(m.nbody).fill(false);
+  const tainted = new Array(m.nbody).fill(false), rounded = new Array(m.nbody).fill(false);
   if (guessed.length === m.nbody) {
     for (let b = m.nbody - 1; b > 0; --b) {
       if (guessed[b]) tainted[b] = true;
+      if (diagonalised[b]) rounded[b] = true;
       if (tainted[b]) tainted[m.body_parentid[b]] = true;
+      if (rounded[b]) rounded[m.body_parentid[b]] = true;
     }
   }
   const guessedBodies = guessed.map((g, b) => (g ? name(O.mjOBJ_BODY, b) ?? `#${b}` : null)).filter((x) => x !== null);
@@ -200,8 +211,11 @@ function compile(modelPath) {
       limited: m.jnt_limited[j] === 1,
       range: [m.jnt_range[2 * j], m.jnt_range[2 * j + 1]],
       stiffness: m.jnt_stiffness[j],
+      actfrclimited: m.jnt_actfrclimited[j] === 1,
+      actfrcrange: [m.jnt_actfrcrange[2 * j], m.jnt_actfrcrange[2 * j + 1]],
       dofs,
       inertia_excluded: tainted[body] ? 'a body it moves takes its mass from a stand-in mesh' : null,
+      inertia_diagonalised: rounded[body],
     });
   }
   const trnNames = ['joint', 'jointinparent', 'slidercrank', 'tendon', 'site', 'body'];

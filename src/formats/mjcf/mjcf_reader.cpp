@@ -304,9 +304,14 @@ class Reader {
     joint.limit_span = joint.span;
     if (angular || linear) {
       const Attr range = lookup("range");
-      const bool limited = values_.flag(lookup("limited"), "limited").value_or(range && compiler_.autolimits);
+      const auto bounds = range ? values_.numbers(range, "range", 2) : std::nullopt;
+      // limited="auto" (MuJoCo's islimited, user_objects.cc): limited when autolimits is on and
+      // range[0] < range[1]; equal bounds ("0 0") leave the joint free. A range written upper
+      // bound first is kept, for limits-inverted to report (MuJoCo silently drops it).
+      const bool auto_limited = bounds && compiler_.autolimits && (*bounds)[0] != (*bounds)[1];
+      const bool limited = values_.flag(lookup("limited"), "limited").value_or(auto_limited);
       const Unit position = linear ? Unit::Meter : compiler_.degree ? Unit::Degree : Unit::Radian;
-      if (limited && range && values_.numbers(range, "range", 2)) {
+      if (limited && bounds) {
         joint.limit_span = values_.value_span(range, "range");
         joint.lower = values_.quantity(range, "range", position, 0);
         joint.upper = values_.quantity(range, "range", position, 1);
