@@ -370,3 +370,10 @@ TEST_CASE("the MJCF reader reads what MuJoCo compiles: the corpus models", "[mjc
   }
   hold_to_mujoco(models_under(corpus / "mjcf"), corpus);
 }
+
+// For models outside the project (a folder of downloaded robots): ASSET_LINT_ORACLE_MODELS=<dir>.
+TEST_CASE("the MJCF reader reads what MuJoCo compiles: models in $ASSET_LINT_ORACLE_MODELS", "[mjcf][mujoco][oracle]") {
+  const char* dir = std::getenv("ASSET_LINT_ORACLE_MODELS");
+  if (dir == nullptr || *dir == '\0') return;
+  hold_to_mujoco(models_under(dir), dir);
+}
