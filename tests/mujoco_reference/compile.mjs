@@ -106,10 +106,17 @@ function* elements(spec, type) {
   for (let e = mj.mjs_firstElement(spec, type); e; e = mj.mjs_nextElement(spec, e)) yield e;
 }
 
-// MuJoCo's compiler errors arrive as C++ exceptions; their text is in the module.
+// MuJoCo's compiler errors arrive as C++ exceptions whose object (mjCError, mjXError) starts
+// with the message text; the module exports no heap, but any model array is a view on it.
+mj.FS.writeFile('/empty.xml', '<mujoco/>');
+const heapOwner = mj.MjModel.loadFromXML('/empty.xml');
 function describe(err) {
-  if (mj.getExceptionMessage && err?.excPtr !== undefined) {
-    try { return mj.getExceptionMessage(err).filter(Boolean).join(': '); } catch { /* fall through */ }
+  if (err?.excPtr !== undefined) {
+    const heap = new Uint8Array(heapOwner.names.buffer);
+    let end = err.excPtr;
+    while (end < heap.length && end < err.excPtr + 1000 && heap[end] !== 0) ++end;
+    const text = Buffer.from(heap.subarray(err.excPtr, end)).toString('utf8').replace(/\s+/g, ' ').trim();
+    return `${err.name}: ${text}`;
   }
   return String(err?.message ?? err);
 }
@@ -139,6 +146,13 @@ function compile(modelPath) {
   };
   for (const e of elements(spec, mj.mjtObj.mjOBJ_MESH)) supply('mesh', mj.mjs_getName(e), mj.mjs_asMesh(e).file);
   for (const e of elements(spec, mj.mjtObj.mjOBJ_TEXTURE)) supply('texture', mj.mjs_getName(e), mj.mjs_asTexture(e).file);
+  // A cube texture's six faces and a height field's image: images too.
+  for (const [, attrs] of text.matchAll(/<texture\b([^>]*)>/g))
+    for (const [, face] of attrs.matchAll(/\bfile(?:right|left|up|down|front|back)\s*=\s*"([^"]*)"/g)) supply('texture', null, face);
+  for (const [, attrs] of text.matchAll(/<hfield\b([^>]*)>/g)) {
+    const file = attrs.match(/\bfile\s*=\s*"([^"]*)"/);
+    if (file) supply('mesh', null, file[1]);
+  }
 
   // Bodies (document order = the compiled model's body order) whose mass properties MuJoCo
   // takes from their geoms, and which of those hold a stand-in mesh.
