@@ -74,14 +74,15 @@ class InertiaInvalid final : public Rule {
  private:
   // Mass and every principal moment typed as the same number (Drake's Atlas Robotiq 3F:
   // 1e-5 kg and 1e-5 kg·m² on 21 four-bar links): a placeholder, one info per file. Its
-  // radius of gyration √(I/m) = 1 m is far larger than any finger link.
+  // radius of gyration √(I/m) = 1 m is far larger than any finger link. 1 kg with 1 kg·m² is the
+  // unit default of test scenes and exporters.
   static std::vector<const Link*> report_mass_equals_inertia(const Asset& asset, Reporter& out) {
     std::vector<const Link*> found;
     for (const Link& link : asset.links) {
       if (!link.inertial || !link.inertial->mass_authored || !link.inertial->inertia_authored) continue;
       const Inertial& in = *link.inertial;
       const double m = in.mass.value;
-      if (m <= 0 || m >= 1.0) continue;
+      if (m <= 0 || m > 1.0) continue;
       if (in.inertia(0, 0) == m && in.inertia(1, 1) == m && in.inertia(2, 2) == m) found.push_back(&link);
     }
     if (found.empty()) return found;
