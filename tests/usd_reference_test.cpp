@@ -347,7 +347,8 @@ TEST_CASE("usd reference: asset-lint composes every USDA stack as OpenUSD 22.11 
   std::vector<std::string> found;
   std::size_t stages = 0, joints = 0, bodies = 0, excepted = 0;
   for (const auto& stage : json["stages"]) {
-    const std::filesystem::path path = stage["path"].get<std::string>();
+    // Canonical like the trees: ../shared may be a symbolic link (it is one in CI's checkout).
+    const std::filesystem::path path = std::filesystem::weakly_canonical(stage["path"].get<std::string>());
     const Tree* tree = nullptr;
     for (const Tree& t : trees)
       if (path.string().rfind(t.dir.string() + "/", 0) == 0) tree = &t;
