@@ -58,11 +58,6 @@ std::string shell_quote(const std::string& text) {
   return quoted + "'";
 }
 
-bool in_ci() {
-  const char* ci = std::getenv("CI");
-  return ci != nullptr && std::string(ci) == "true";
-}
-
 // Models, not <include> fragments: MJCF files whose root holds a <worldbody>.
 std::vector<fs::path> models_under(const fs::path& root) {
   std::vector<fs::path> found;
@@ -327,7 +322,7 @@ void hold_to_mujoco(const std::vector<fs::path>& models, const fs::path& base) {
   else if (!fs::exists(package / "dist" / "mujoco_wasm.js"))
     missing = "mujoco-js is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
   if (!missing.empty()) {
-    if (in_ci()) FAIL("MuJoCo reference missing in CI: " << missing);
+    if (assetlint::test::in_ci()) FAIL("MuJoCo reference missing in CI: " << missing);
     WARN("MuJoCo reference test skipped: " << missing);
     return;
   }

@@ -2,7 +2,7 @@
 // reference for the drive model in src/physics: tests/physx_reference/run.mjs builds one link
 // on a revolute joint per case, measures free motion and the torque that holds it at a hard
 // stop, and this file holds the model (drive row, static hold, frame stepper) to those numbers
-// at 1e-3 relative. Skipped with a message when `node` or the package is absent
+// at 1e-3 relative. Skipped with a message when `node` or the package is absent, a failure under CI=true
 // (scripts/bootstrap.sh installs the package into tools/node_modules).
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -84,6 +84,7 @@ const Measurements& measurements() {
 bool skip_without_physx() {
   const auto& m = measurements();
   if (m.skipped.empty()) return false;
+  if (assetlint::test::in_ci()) FAIL("PhysX reference missing under CI=true: " << m.skipped);
   WARN("PhysX reference skipped: " << m.skipped);
   return true;
 }

@@ -13,6 +13,10 @@ inline std::filesystem::path report_dir() { return fixtures_dir() / "report"; }
 // ../shared/corpus beside the repository; empty when it is absent.
 std::filesystem::path corpus_dir();
 
+// CI=true in the environment: a reference implementation bootstrap installs must be there, so a
+// test that needs one fails instead of skipping.
+bool in_ci();
+
 std::string read_file(const std::filesystem::path& path);
 // `text` with the first `from` replaced by `to`; throws when `from` is not in it.
 std::string replace_once(std::string text, const std::string& from, const std::string& to);

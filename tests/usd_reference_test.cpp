@@ -43,11 +43,6 @@ using assetlint::Joint;
 using assetlint::Link;
 using assetlint::OptQuantity;
 
-bool in_ci() {
-  const char* ci = std::getenv("CI");
-  return ci != nullptr && std::string(ci) == "true";
-}
-
 struct Reference {
   nlohmann::json json;  // flatten.mjs's output; null when skipped
   std::string skipped;  // why, when skipped
@@ -85,7 +80,7 @@ const Reference& reference() {
 bool skip_without_openusd() {
   const auto& r = reference();
   if (r.skipped.empty()) return false;
-  if (in_ci()) FAIL("OpenUSD reference missing under CI=true: " << r.skipped);
+  if (assetlint::test::in_ci()) FAIL("OpenUSD reference missing under CI=true: " << r.skipped);
   WARN("OpenUSD reference skipped: " << r.skipped << "; run scripts/bootstrap.sh");
   return true;
 }
