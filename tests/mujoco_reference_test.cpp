@@ -19,7 +19,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,31 +31,12 @@
 
 using namespace assetlint;
 using assetlint::test::read_file;
+using assetlint::test::shell_quote;
 using assetlint::test::source_dir;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-std::filesystem::path find_on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return {};
-  std::stringstream dirs(path);
-  for (std::string dir; std::getline(dirs, dir, ':');) {
-    const auto candidate = fs::path(dir.empty() ? "." : dir) / program;
-    std::error_code ec;
-    if (fs::is_regular_file(candidate, ec) &&
-        (fs::status(candidate, ec).permissions() & fs::perms::owner_exec) != fs::perms::none)
-      return candidate;
-  }
-  return {};
-}
-
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
 
 // Models, not <include> fragments: MJCF files whose root holds a <worldbody>.
 std::vector<fs::path> models_under(const fs::path& root) {
@@ -315,10 +295,9 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
 
 // `base`: the directory model paths are named relative to in the listing.
 void hold_to_mujoco(const std::vector<fs::path>& models, const fs::path& base) {
-  const auto node = find_on_path("node");
-  const auto package = source_dir() / "tools" / "node_modules" / "mujoco-js";
+    const auto package = source_dir() / "tools" / "node_modules" / "mujoco-js";
   std::string missing;
-  if (node.empty()) missing = "node not found on PATH";
+  if (!assetlint::test::on_path("node")) missing = "node not found on PATH";
   else if (!fs::exists(package / "dist" / "mujoco_wasm.js"))
     missing = "mujoco-js is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
   if (!missing.empty()) {
@@ -329,7 +308,7 @@ void hold_to_mujoco(const std::vector<fs::path>& models, const fs::path& base) {
   REQUIRE(!models.empty());
   assetlint::test::TempDir dir;
   const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
-  std::string command = "timeout 300 " + shell_quote(node.string()) + " " +
+  std::string command = std::string("timeout 300 node ") +
                         shell_quote((source_dir() / "tests" / "mujoco_reference" / "compile.mjs").string()) + " " +
                         shell_quote(package.string());
   for (const auto& model : models) command += " " + shell_quote(model.string());

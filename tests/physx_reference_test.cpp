@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -20,30 +19,10 @@
 #include "physics/step.h"
 
 using assetlint::test::read_file;
+using assetlint::test::shell_quote;
 using assetlint::test::source_dir;
 
 namespace {
-
-std::filesystem::path find_on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return {};
-  std::stringstream dirs(path);
-  for (std::string dir; std::getline(dirs, dir, ':');) {
-    const auto candidate = std::filesystem::path(dir.empty() ? "." : dir) / program;
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(candidate, ec) &&
-        (std::filesystem::status(candidate, ec).permissions() & std::filesystem::perms::owner_exec) !=
-            std::filesystem::perms::none)
-      return candidate;
-  }
-  return {};
-}
-
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
 
 struct Measurements {
   nlohmann::json json;  // run.mjs's output; null when skipped
@@ -54,9 +33,8 @@ struct Measurements {
 const Measurements& measurements() {
   static const Measurements result = [] {
     Measurements m;
-    const auto node = find_on_path("node");
-    const auto package = source_dir() / "tools" / "node_modules" / "physx-js-webidl";
-    if (node.empty()) {
+        const auto package = source_dir() / "tools" / "node_modules" / "physx-js-webidl";
+    if (!assetlint::test::on_path("node")) {
       m.skipped = "node not found on PATH";
       return m;
     }
@@ -66,7 +44,7 @@ const Measurements& measurements() {
     }
     assetlint::test::TempDir dir;
     const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
-    const std::string command = "timeout 120 " + shell_quote(node.string()) + " " +
+    const std::string command = std::string("timeout 120 node ") +
                                 shell_quote((source_dir() / "tests" / "physx_reference" / "run.mjs").string()) +
                                 " " + shell_quote(package.string()) + " >" + shell_quote(out.string()) + " 2>" +
                                 shell_quote(err.string()) + " </dev/null";
