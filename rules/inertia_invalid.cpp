@@ -66,12 +66,17 @@ class InertiaInvalid final : public Rule {
     }
     if (urdf) check_bodies(asset, bodies, out);
     const auto where = placements(asset, bodies);
-    for (std::size_t i = 0; i < asset.links.size(); ++i) check_link(asset.links[i], where[i], settings, out);
+    for (std::size_t i = 0; i < asset.links.size(); ++i)
+      if (!from_geometry(asset.links[i])) check_link(asset.links[i], where[i], settings, out);
     const auto equal = report_mass_equals_inertia(asset, out);
     report_gyration(asset, where, equal, out);
   }
 
  private:
+  // Mass properties MuJoCo computes from a body's geoms describe that geometry exactly: nothing
+  // typed by hand to judge.
+  static bool from_geometry(const Link& link) { return link.inertial && link.inertial->from_geoms; }
+
   // Mass and every principal moment typed as the same number (Drake's Atlas Robotiq 3F:
   // 1e-5 kg and 1e-5 kg·m² on 21 four-bar links): a placeholder, one info per file. Its
   // radius of gyration √(I/m) = 1 m is far larger than any finger link. 1 kg with 1 kg·m² is the
@@ -124,7 +129,7 @@ class InertiaInvalid final : public Rule {
       if (const auto i = asset.index_of(*link)) reported[*i] = true;
     for (std::size_t i = 0; i < asset.links.size(); ++i) {
       const Link& link = asset.links[i];
-      if (where[i].role != Role::BodyStart || !link.inertial) continue;
+      if (where[i].role != Role::BodyStart || !link.inertial || from_geometry(link)) continue;
       if (physics::pasted_tensor(link.inertial->inertia) || reported[i])
         continue;
       const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link),

@@ -43,6 +43,9 @@ struct Inertial {
   // USD without physics:centerOfMass: PhysX computes the COM from colliders; `com` is then
   // the body origin standing in, not a fact.
   bool com_authored = true;
+  // MJCF body without <inertial>: computed by the reader from the body's geoms as MuJoCo's
+  // compiler does; a fact of the geometry, not a value someone typed.
+  bool from_geoms = false;
 };
 
 struct Link {
@@ -50,8 +53,8 @@ struct Link {
   Span span;  // the element or prim
   std::optional<Inertial> inertial;
   bool kinematic = false;  // USD physics:kinematicEnabled: moved by the user, not the solver
-  // MJCF body without <inertial> (or <compiler inertiafromgeom="true">) that holds geoms:
-  // MuJoCo derives its mass and inertia from them, which asset-lint does not compute.
+  // MJCF body without <inertial> (or <compiler inertiafromgeom="true">) whose geoms give
+  // MuJoCo a mass asset-lint cannot compute (a mesh, a height field): mass and inertia unknown.
   bool mass_from_geoms = false;
 };
 

@@ -162,12 +162,15 @@ function compile(modelPath) {
   const guessed = [], diagonalised = [];
   for (const e of elements(spec, mj.mjtObj.mjOBJ_BODY)) {
     const body = mj.mjs_asBody(e);
-    diagonalised.push(body.explicitinertial === 1 && !fromGeoms && !Number.isNaN(body.fullinertia[0]));
-    let standin = false;
+    let standin = false, geoms = 0;
     if (fromGeoms || !body.explicitinertial) {
-      for (let g = mj.mjs_firstChild(body, mj.mjtObj.mjOBJ_GEOM, 0); g; g = mj.mjs_nextChild(body, g, 0))
+      for (let g = mj.mjs_firstChild(body, mj.mjtObj.mjOBJ_GEOM, 0); g; g = mj.mjs_nextChild(body, g, 0)) {
         if (standinMeshes.has(mj.mjs_asGeom(g).meshname)) standin = true;
+        ++geoms;
+      }
     }
+    // Several geoms: MuJoCo sums their tensors and diagonalises the sum the same way.
+    diagonalised.push((body.explicitinertial === 1 && !fromGeoms && !Number.isNaN(body.fullinertia[0])) || geoms > 1);
     guessed.push(standin);
   }
   spec.delete();

@@ -11,6 +11,7 @@ using tinyxml2::XMLElement;
 std::string_view default_kind(std::string_view element) {
   if (element == "joint") return "joint";
   if (element == "equality") return "equality";
+  if (element == "geom") return "geom";
   if (element == "general" || element == "motor" || element == "position" || element == "velocity" ||
       element == "intvelocity" || element == "damper" || element == "cylinder" || element == "muscle" ||
       element == "adhesion")

@@ -9,6 +9,7 @@
 #include "formats/mjcf/mjcf_actuators.h"
 #include "formats/mjcf/mjcf_dampratio.h"
 #include "formats/mjcf/mjcf_defaults.h"
+#include "formats/mjcf/mjcf_geom_inertia.h"
 #include "formats/mjcf/mjcf_values.h"
 #include "formats/xml/xml_scanner.h"
 #include "physics/servo_step.h"
@@ -59,6 +60,7 @@ class Reader {
     read_options(sections);
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
+    if (compiler_.settotalmass > 0) scale_to_total_mass(compiler_.settotalmass);
     const FixedTendons tendons = read_fixed_tendons(sections);
     std::vector<const XMLElement*> joint_equalities;
     // An actuator on a spatial tendon, a site or a body moves joints the model does not name
@@ -132,6 +134,11 @@ class Reader {
     }
     if (auto f = values_.flag(own(el, "autolimits"), "autolimits")) compiler_.autolimits = *f;
     if (const char* g = el->Attribute("inertiafromgeom")) compiler_.inertiafromgeom = std::string(trim(g));
+    if (auto r = values_.numbers(own(el, "inertiagrouprange"), "inertiagrouprange", 2)) {
+      compiler_.inertia_group_low = static_cast<int>((*r)[0]);
+      compiler_.inertia_group_high = static_cast<int>((*r)[1]);
+    }
+    if (auto m = values_.numbers(own(el, "settotalmass"), "settotalmass", 1)) compiler_.settotalmass = (*m)[0];
   }
 
   void read_options(const std::vector<const XMLElement*>& sections) {
@@ -198,15 +205,17 @@ class Reader {
     link.span = values_.element_span(el);
     const Eigen::Isometry3d body_pose = pose(el, compiler_, values_);
     std::size_t joints = 0;
-    bool geoms = false;
+    std::vector<const XMLElement*> geoms;
+    bool frames = false;
     for (const XMLElement* c : sources_.children(el)) {
       const std::string_view tag = c->Name();
       if (tag == "inertial") read_inertial(c, link);
       else if (tag == "joint" || tag == "freejoint") joints += read_joint(c, link.name.text, parent, body_pose, cls);
-      else if (tag == "geom") geoms = true;
+      else if (tag == "geom") geoms.push_back(c);
+      else if (tag == "frame") frames = true;
     }
     // Without <inertial> (or when the compiler ignores it) MuJoCo sums the geoms' mass and inertia.
-    link.mass_from_geoms = geoms && !link.inertial;
+    if (!link.inertial && compiler_.inertiafromgeom != "false") inertia_from_geoms(link, geoms, frames, cls);
     if (joints == 0) {
       Joint weld;
       weld.name = Name{link.name.text + " (welded)", link.name.span};
@@ -222,6 +231,63 @@ class Reader {
     const std::string name = link.name.text;  // links grows below: no reference into it
     result_.asset.links.push_back(std::move(link));
     read_bodies(el, name, cls);
+  }
+
+  // <compiler settotalmass>: MuJoCo scales every body's mass and inertia by one factor so that
+  // they add up to the total (engine_setconst.c, mj_setTotalmass). A body of unknown mass
+  // leaves the factor, and so every mass, unknown.
+  void scale_to_total_mass(double total) {
+    auto& links = result_.asset.links;
+    double mass = 0;
+    bool unknown = false;
+    for (const Link& link : links) {
+      unknown = unknown || link.mass_from_geoms;
+      if (link.inertial) mass += link.inertial->mass.value;
+    }
+    if (unknown || !(mass > 0)) {
+      for (Link& link : links) {
+        link.mass_from_geoms = link.mass_from_geoms || link.inertial.has_value();
+        link.inertial.reset();
+      }
+      return;
+    }
+    const double factor = total / mass;
+    for (Link& link : links) {
+      if (!link.inertial) continue;
+      link.inertial->mass.value *= factor;
+      link.inertial->mass.scale *= factor;
+      link.inertial->inertia *= factor;
+    }
+  }
+
+  void inertia_from_geoms(Link& link, const std::vector<const XMLElement*>& geoms, bool frames, const std::string& cls) {
+    std::vector<physics::MassPart> parts;
+    bool unknown = frames;  // geoms placed through a <frame> are not read
+    for (const XMLElement* g : geoms) {
+      const auto geom_class = class_of(g, cls);
+      if (!geom_class) return;
+      const auto& defs = defaults_.elements(*geom_class, "geom");
+      int group = 0;
+      if (auto v = values_.numbers(Defaults::lookup(g, defs, "group"), "group", 1)) group = static_cast<int>((*v)[0]);
+      if (group < compiler_.inertia_group_low || group > compiler_.inertia_group_high) continue;
+      const GeomMass mass = geom_mass(g, defs, compiler_, values_);
+      if (!mass.unknown.empty()) unknown = true;
+      else if (mass.part) parts.push_back(*mass.part);
+    }
+    if (unknown) {
+      link.mass_from_geoms = true;
+      return;
+    }
+    if (parts.empty()) return;  // no geom carries mass: a massless body, as MuJoCo compiles it
+    const physics::MassPart body = physics::combine_parts(parts);
+    Inertial in;
+    in.span = link.span;
+    in.mass = Quantity::unauthored(body.mass, Unit::Kilogram);
+    in.com = body.com;
+    in.com_span = in.inertia_span = link.span;
+    in.inertia = body.inertia;
+    in.from_geoms = true;
+    link.inertial = in;
   }
 
   void read_inertial(const XMLElement* el, Link& link) {

@@ -20,6 +20,8 @@ struct Compiler {
   std::string eulerseq = "xyz";            // lower case: axes that move with the frame
   bool autolimits = true;                  // limited="auto" means "limited when a range is given"
   std::string inertiafromgeom = "auto";    // "true": <inertial> is ignored, geoms give mass and inertia
+  int inertia_group_low = 0, inertia_group_high = 5;  // inertiagrouprange: the geom groups that carry mass
+  double settotalmass = -1;                // > 0: every body's mass and inertia scaled to this total
   Span angle_span;                         // where angle= is written, for notes
 };
 
