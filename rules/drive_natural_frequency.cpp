@@ -38,7 +38,7 @@ class DriveNaturalFrequency final : public Rule {
                                    fmt::format("drive of {}: natural frequency not checked, no link mass", short_name(joint)));
         if (driven->judged.basis == InertiaBasis::JointSpace)
           d.note(fmt::format("M₀ᵢᵢ, the inertia MuJoCo's step divides by, needs every body the joint moves: {}; MuJoCo "
-                             "derives missing masses from geoms, which a text linter does not.",
+                             "derives it from geoms asset-lint cannot measure (a mesh, a height field, a shell).",
                              driven->judged.why_unknown()));
         else
           d.note(fmt::format("No moving link of it or its mimics authors mass, inertia and centre of mass ({}); PhysX "

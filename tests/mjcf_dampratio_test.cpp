@@ -64,14 +64,17 @@ TEST_CASE("dampratio through a gear, a <general> positive biasprm[2], and an unk
   CHECK_THAT(damping(r.asset, "wrist_yaw"), WithinRel(0.04007193531637822 * 25, 1e-12));
   CHECK_THAT(damping(r.asset, "wrist_pitch"), WithinRel(0.818840643837371, 1e-12));
   CHECK_THAT(damping(r.asset, "finger_joint"), WithinRel(0.010198039027185598, 1e-12));
-  // The thumb's mass comes from its geom: damping unknown, not 0, and said so.
-  const Joint* thumb = r.asset.find_joint("thumb_joint");
-  REQUIRE(thumb->drive);
-  CHECK_FALSE(thumb->drive->damping);
-  CHECK(thumb->drive->damping_unknown.find("'thumb'") != std::string::npos);
+  // The thumb's mass comes from its capsule: r 0.008 m, 0.04 m long, 1000 kg/m³ = 0.010187 kg,
+  // 6.44599e-6 kg·m² about the hinge 0.02 m from its centroid; kv = 2·√(2 × 6.44599e-6).
+  CHECK_THAT(damping(r.asset, "thumb_joint"), WithinRel(0.007181081731230781, 1e-9));
+  // The pad's comes from a mesh: damping unknown, not 0, and said so.
+  const Joint* pad = r.asset.find_joint("pad_joint");
+  REQUIRE(pad->drive);
+  CHECK_FALSE(pad->drive->damping);
+  CHECK(pad->drive->damping_unknown.find("'pad'") != std::string::npos);
   REQUIRE(r.diagnostics.size() == 1);
   CHECK(r.diagnostics[0].rule == "mjcf-unsupported");
-  CHECK(r.diagnostics[0].span.line == 31);
+  CHECK(r.diagnostics[0].span.line == 40);
 }
 
 TEST_CASE("an element's dampratio replaces its class's kv; kv and dampratio on one element is an error",

@@ -83,8 +83,8 @@ struct Comparison {
 
 // What asset-lint deliberately does not model, and why (docs/mjcf.md "Held to MuJoCo").
 constexpr const char* kGeomInertia =
-    "joint-space inertia of joints that move a body whose mass MuJoCo takes from its geoms (asset-lint reads <inertial> "
-    "only; the damping a dampratio derives from it stays unknown, and the rules skip it)";
+    "joint-space inertia of joints that move a body whose mass MuJoCo takes from a mesh geom (asset-lint measures "
+    "primitive geoms only; the damping a dampratio derives from it stays unknown, and the rules skip it)";
 constexpr const char* kStandIn = "quantities depending on a mesh file absent here (MuJoCo compiled a stand-in)";
 constexpr const char* kMultiDof = "ball and free joints' own dofs (asset-lint's drive rules judge single-dof joints)";
 constexpr const char* kTransmission = "actuators acting through a tendon, site or body (only joint transmissions are modelled)";

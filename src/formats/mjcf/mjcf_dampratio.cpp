@@ -33,7 +33,7 @@ void derive_dampratio_damping(const std::vector<DampRatio>& requests, Values& va
     const physics::ArticulatedInertia inertia = articulation.joint_space_inertia(joint);
     if (!inertia.known && r.ratio != 0) {
       const std::string why = !inertia.unknown_links.empty()
-                                  ? fmt::format("the mass of {} comes from geoms, which asset-lint does not compute",
+                                  ? fmt::format("the mass of {} comes from geoms asset-lint cannot measure (a mesh, a height field, a shell)",
                                                 names(inertia.unknown_links))
                                   : inertia.reason;
       drive.damping_unknown = fmt::format("kv from dampratio {} needs the joint-space inertia M₀ of '{}', unknown: {}",
