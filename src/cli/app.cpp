@@ -19,6 +19,7 @@
 #include "commands/stdin.h"
 #include "commands/simulate.h"
 #include "commands/tune.h"
+#include "commands/verify.h"
 #include "config/project_root.h"
 #include "config/resolver.h"
 #include "engine/file_system.h"
@@ -166,6 +167,7 @@ int run(const std::vector<std::string>& args, std::istream& in, std::ostream& ou
   if (!args.empty() && args.front() == "compare")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
   if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
+  if (!args.empty() && args.front() == "verify") return commands::run_verify({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "simulate")
     return commands::run_simulate({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "check")

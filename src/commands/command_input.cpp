@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "commands/exit_status.h"
 #include "config/resolver.h"
@@ -81,6 +82,14 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
     result.error = fmt::format("cannot read {}: {}", path, first);
   }
   return result;
+}
+
+bool write_text_file(const std::string& path, const std::string& text, std::string& error) {
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  file << text;
+  file.close();
+  if (!file) error = fmt::format("cannot write '{}'", path);
+  return static_cast<bool>(file);
 }
 
 physics::SimulationRate command_rate(const Asset& asset, const Settings& settings) {

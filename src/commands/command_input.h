@@ -43,6 +43,9 @@ struct CompositionScope {
 CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
                                 const CompositionScope& scope = {});
 
+// Writes a report file (--plot, --csv); false with `error` naming the path when it cannot.
+bool write_text_file(const std::string& path, const std::string& text, std::string& error);
+
 // Adds --root and --allow-outside-root to a command.
 void add_scope_options(CLI::App& app, CompositionScope& scope);
 

@@ -29,14 +29,6 @@ std::optional<double> finite_flag(const std::string& flag, const std::string& te
   return value;
 }
 
-bool write_text_file(const std::string& path, const std::string& text, std::string& error) {
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file << text;
-  file.close();
-  if (!file) error = fmt::format("cannot write '{}'", path);
-  return static_cast<bool>(file);
-}
-
 }  // namespace
 
 int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

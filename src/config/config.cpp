@@ -31,6 +31,7 @@ class Loader {
       else if (name == "exclude" || name == "extend-exclude" || name == "respect-gitignore") file_selection(node, name);
       else if (name == "simulation") simulation(table(node, name));
       else if (name == "gripper") gripper(table(node, name));
+      else if (name == "verify") verify(table(node, name));
       else if (name == "drives") drives(table(node, name));
       else if (name == "rules") rules(table(node, name));
       else unknown(key, "");
@@ -178,6 +179,21 @@ class Loader {
       else if (k == "torque_margin") g.torque_margin = positive(node, k);
       else if (k == "driven_joint") g.driven_joint = Configured<std::string>{string(node, k), origin(node)};
       else unknown(key, "gripper");
+    }
+  }
+
+  void verify(const toml::table& t) {
+    VerifySettings& v = settings_.verify;
+    for (const auto& [key, node] : t) {
+      const std::string_view k = key.str();
+      if (k == "close_time_under") v.close_time_under = *positive(node, k);
+      else if (k == "close_time_over") v.close_time_over = *positive(node, k);
+      else if (k == "peak_penetration_m") v.peak_penetration_m = *positive(node, k);
+      else if (k == "steady_penetration_m") v.steady_penetration_m = *positive(node, k);
+      else if (k == "slip_m") v.slip_m = *positive(node, k);
+      else if (k == "jitter_m_s") v.jitter_m_s = *positive(node, k);
+      else if (k == "window_s") v.window_s = *positive(node, k);
+      else unknown(key, "verify");
     }
   }
 

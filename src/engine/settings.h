@@ -52,6 +52,17 @@ struct GripperSpec {
   std::optional<Configured<std::string>> driven_joint;
 };
 
+// The pass thresholds of `asset-lint verify` (docs/verify.md), each with where it was set.
+struct VerifySettings {
+  Configured<double> close_time_under{0.20, "default"};  // fraction of the spec's close time it may be faster
+  Configured<double> close_time_over{0.25, "default"};   // fraction it may be slower
+  Configured<double> peak_penetration_m{0.002, "default"};
+  Configured<double> steady_penetration_m{0.001, "default"};
+  Configured<double> slip_m{0.005, "default"};
+  Configured<double> jitter_m_s{0.001, "default"};
+  Configured<double> window_s{1.0, "default"};  // the steady period judged at the end of each scene
+};
+
 // Drive gains for formats that carry none (URDF), as an importer or actuator config sets them.
 // PhysX units: N·m/rad, N·m·s/rad, kg·m², N·m (N/m, N·s/m, kg, N for prismatic joints).
 struct DriveSettings {
@@ -78,6 +89,7 @@ struct Settings {
   std::vector<PerFileIgnore> per_file_ignores;
   SimulationSettings simulation;
   GripperSpec gripper;
+  VerifySettings verify;
   std::map<std::string, DriveSettings, std::less<>> drives;
   std::string config_path;  // the asset-lint.toml in effect; empty when none
   // The checked tree, whose files composed USD layers may read (config/project_root.h):

@@ -48,6 +48,19 @@ struct Inertial {
   bool from_geoms = false;
 };
 
+// A collision shape of a link, as the asset authors it (URDF <collision>; USD collider prims;
+// MJCF geoms). Visual geometry is not modelled.
+struct CollisionShape {
+  enum class Kind { Box, Cylinder, Sphere, Capsule, Mesh };
+  Kind kind = Kind::Box;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // in the link frame
+  // Box: full edge lengths; cylinder and capsule: (radius, length along z, 0); sphere: (radius, 0, 0).
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  std::string mesh;                                   // mesh file as written (URDF filename), for Kind::Mesh
+  Eigen::Vector3d mesh_scale = Eigen::Vector3d::Ones();
+  Span span;
+};
+
 struct Link {
   Name name;
   Span span;  // the element or prim
@@ -56,6 +69,7 @@ struct Link {
   // MJCF body without <inertial> (or <compiler inertiafromgeom="true">) whose geoms give
   // MuJoCo a mass asset-lint cannot compute (a mesh, a height field): mass and inertia unknown.
   bool mass_from_geoms = false;
+  std::vector<CollisionShape> collisions{};
 };
 
 enum class JointType { Revolute, Continuous, Prismatic, Fixed, Floating, Planar, Spherical, Generic };

@@ -21,6 +21,8 @@ const Joint* spec_joint(const Asset& asset, const Settings& settings) {
   return only;
 }
 
+double grip_force(double payload_kg, double gravity, double friction) { return payload_kg * gravity / friction; }
+
 double round_up_torque(double torque, const GripperSpec& spec) {
   if (!spec.torque_margin) return torque;
   const double margin = spec.torque_margin->value;
@@ -37,7 +39,7 @@ std::optional<RequiredForce> required_force(const Asset& asset, const Settings& 
   if (any_angular && !g.lever_arm_m) return std::nullopt;
 
   RequiredForce f;
-  f.grip_force = g.payload_kg->value * g.gravity.value / g.friction->value;
+  f.grip_force = grip_force(g.payload_kg->value, g.gravity.value, g.friction->value);
   f.per_finger = f.grip_force / 2.0;
   f.joints = coupled.size();
   f.unit = is_angular(driven.type) ? Unit::NewtonMeter : Unit::Newton;

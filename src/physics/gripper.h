@@ -18,6 +18,9 @@ const Joint* spec_joint(const Asset& asset, const Settings& settings);
 // sets the same key, so both go through here.
 double round_up_torque(double torque, const GripperSpec& spec);
 
+// F = m·g/μ: the squeeze (sum of both fingers' normal forces) whose friction holds the payload.
+double grip_force(double payload_kg, double gravity, double friction);
+
 struct RequiredForce {
   double grip_force = 0;         // N, both fingers: m·g/μ
   double per_finger = 0;         // N

@@ -210,7 +210,50 @@ class UrdfReader {
       }
       link.inertial = inertial;
     }
+    for (const Element* c = doc_.first_child(el, "collision"); c; c = doc_.next_sibling(c, "collision"))
+      if (auto shape = collision(c)) link.collisions.push_back(std::move(*shape));
     result_.asset.links.push_back(std::move(link));
+  }
+
+  // One <collision>: its pose and its one geometry; an unreadable size leaves the shape out
+  // (the parse error says why).
+  std::optional<CollisionShape> collision(const Element* c) {
+    const Element* geometry = doc_.first_child(c, "geometry");
+    const Element* g = geometry ? doc_.first_child(geometry) : nullptr;
+    if (!g) return std::nullopt;
+    CollisionShape shape;
+    shape.pose = pose(doc_.first_child(c, "origin"));
+    shape.span = element_span(c);
+    const auto length = [&](std::string_view attr) { return quantity(g, attr, Unit::Meter); };
+    if (g->name == "box") {
+      const auto size = vector3(g, "size");
+      if (!size) return std::nullopt;
+      shape.kind = CollisionShape::Kind::Box;
+      shape.size = *size;
+    } else if (g->name == "cylinder") {
+      const auto radius = length("radius"), height = length("length");
+      if (!radius || !height) return std::nullopt;
+      shape.kind = CollisionShape::Kind::Cylinder;
+      shape.size = {radius->value, height->value, 0};
+    } else if (g->name == "sphere") {
+      const auto radius = length("radius");
+      if (!radius) return std::nullopt;
+      shape.kind = CollisionShape::Kind::Sphere;
+      shape.size = {radius->value, 0, 0};
+    } else if (g->name == "mesh") {
+      const auto file = attribute(g, "filename");
+      if (!file) return std::nullopt;
+      shape.kind = CollisionShape::Kind::Mesh;
+      shape.mesh = std::string(trim(*file));
+      if (attribute(g, "scale")) {
+        const auto scale = vector3(g, "scale");
+        if (!scale) return std::nullopt;
+        shape.mesh_scale = *scale;
+      }
+    } else {
+      return std::nullopt;
+    }
+    return shape;
   }
 
   static std::optional<JointType> joint_type(std::string_view text) {

@@ -1,0 +1,163 @@
+#include "commands/verify.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "backends/mujoco/mujoco_engine.h"
+#include "commands/command_input.h"
+#include "commands/exit_status.h"
+#include "commands/tune_derivation.h"
+#include "commands/verify_report.h"
+#include "physics/gripper.h"
+#include "physics/sizing.h"
+#include "util/numbers.h"
+#include "verify/metrics.h"
+
+namespace assetlint::commands {
+namespace {
+
+std::string origin_of(const Asset& asset, const Quantity& q, const std::optional<Configured<double>>& configured) {
+  if (configured && !q.span.valid()) return configured->origin;
+  if (!q.span.valid()) return "the asset's default";
+  return fmt::format("{}:{}", asset.source(q.span.file).path(), q.span.line);
+}
+
+std::string spec_line(const char* what, const std::optional<Configured<double>>& value, const char* unit) {
+  return value ? fmt::format("{} {} {} ({})", what, format_number(value->value, 4), unit, value->origin)
+               : fmt::format("{}: not set", what);
+}
+
+}  // namespace
+
+int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"asset-lint verify: the guide's verification scenes (close, grasp, hold, lift) run headless in a physics "
+               "engine",
+               "asset-lint verify"};
+  std::string path, format = "text", engine_name = "mujoco";
+  std::optional<std::string> config, plot;
+  app.add_option("asset", path, "The gripper: a .urdf file")->required();
+  app.add_option("--engine", engine_name, "The engine that steps the scenes: mujoco (MuJoCo 2.2.2)")
+      ->check(CLI::IsMember({"mujoco"}));
+  app.add_option("--output-format", format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  app.add_option("--plot", plot, "Write an SVG of finger opening, object height and penetration over time");
+  app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the asset)");
+  CompositionScope scope;
+  add_scope_options(app, scope);
+  if (auto status = parse_command(app, args, "verify", out, err)) return *status;
+  const auto fail = [&](const std::string& message) {
+    err << "asset-lint verify: error: " << message << "\n";
+    return kExitError;
+  };
+
+  CommandAsset input = load_command_asset(path, config, scope);
+  if (input.error) return fail(*input.error);
+  const Settings& settings = input.settings;
+  const Asset& asset = input.loaded.read.asset;
+  if (asset.format != SourceFormat::Urdf)
+    return fail(fmt::format("{}: verify reads URDF grippers (with box, cylinder and sphere collision shapes)", path));
+  std::string error;
+  const Joint* joint = tune_joint(asset, settings, std::nullopt, error);
+  if (!joint) return fail(fmt::format("{}: {}", path, error));
+  const Drive* drive = joint->drive ? &*joint->drive : nullptr;
+  if (!drive || !drive->stiffness || !(drive->stiffness->value > 0))
+    return fail(fmt::format("{}: joint '{}' has no drive stiffness: set [drives.{}] stiffness and damping in "
+                            "asset-lint.toml (`asset-lint tune --apply` derives them)",
+                            path, joint->name.text, joint->name.text));
+  for (const Link& link : asset.links)
+    for (const CollisionShape& shape : link.collisions)
+      if (shape.kind == CollisionShape::Kind::Mesh)
+        return fail(fmt::format("{}: link '{}' collides with the mesh '{}': verify reads box, cylinder and sphere "
+                                "collision shapes",
+                                path, link.name.text, shape.mesh));
+
+  verify::VerifyPlan plan;
+  plan.asset = &asset;
+  plan.asset_dir = std::filesystem::path(path).parent_path().string();
+  auto layout = verify::gripper_layout(asset, *joint, error);
+  if (!layout) return fail(fmt::format("{}: {}", path, error));
+  plan.layout = std::move(*layout);
+
+  const auto configured_drive = settings.drives.find(joint->name.text);
+  const DriveSettings* table = configured_drive == settings.drives.end() ? nullptr : &configured_drive->second;
+  plan.drive.stiffness = drive->stiffness->value;
+  plan.drive.damping = drive->damping ? drive->damping->value : 0.0;
+  const Quantity* force = drive->max_force ? &*drive->max_force : joint->effort ? &*joint->effort : nullptr;
+  if (force && force->value > 0) plan.drive.max_force = force->value;
+  if (joint->velocity && joint->velocity->value > 0) plan.drive.max_velocity = joint->velocity->value;
+
+  const physics::SimulationRate rate = command_rate(asset, settings);
+  plan.timestep = rate.h();
+  plan.frame = rate.dt();
+  plan.timestep_origin = rate.describe();
+  const GripperSpec& g = settings.gripper;
+  plan.gravity = g.gravity.value;
+  if (g.stroke_m && g.finger_speed_m_s) plan.spec_close_time = physics::close_time(g.stroke_m->value, g.finger_speed_m_s->value);
+  if (g.payload_kg && g.friction)
+    plan.required_grip_force = physics::grip_force(g.payload_kg->value, g.gravity.value, g.friction->value);
+  plan.scenes = verify::build_scenes(plan, settings);
+
+  const bool angular = is_angular(joint->type);
+  const char* force_unit = angular ? "N·m" : "N";
+  VerifyReport report;
+  report.path = path;
+  report.joint = joint->name.text;
+  report.angular = angular;
+  report.inputs = {
+      spec_line("payload", g.payload_kg, "kg"),
+      spec_line("friction μ", g.friction, ""),
+      fmt::format("gravity {} m/s² ({})", format_number(g.gravity.value, 4), g.gravity.origin),
+      spec_line("stroke", g.stroke_m, "m"),
+      spec_line("finger speed", g.finger_speed_m_s, "m/s"),
+      fmt::format("target delta {}° ({})", format_number(g.target_delta_deg.value, 4), g.target_delta_deg.origin),
+      fmt::format("drive of '{}': stiffness {} {}/{} ({}), damping {} {}·s/{} ({}), max force {}, max velocity {}",
+                  joint->name.text, format_number(plan.drive.stiffness, 4), force_unit, angular ? "rad" : "m",
+                  origin_of(asset, *drive->stiffness, table ? table->stiffness : std::nullopt),
+                  format_number(plan.drive.damping, 4), force_unit, angular ? "rad" : "m",
+                  drive->damping ? origin_of(asset, *drive->damping, table ? table->damping : std::nullopt)
+                                 : std::string("none"),
+                  plan.drive.max_force ? fmt::format("{} {} ({})", format_number(*plan.drive.max_force, 4), force_unit,
+                                                     origin_of(asset, *force, table ? table->max_force : std::nullopt))
+                                       : std::string("unbounded"),
+                  plan.drive.max_velocity
+                      ? fmt::format("{} {}/s ({})", format_number(*plan.drive.max_velocity, 4), angular ? "rad" : "m",
+                                    origin_of(asset, *joint->velocity, std::nullopt))
+                      : std::string("unbounded")),
+      fmt::format("step: {}; the engine steps h = {} s and samples every frame ({} s)", plan.timestep_origin,
+                  format_number(plan.timestep, 4), format_number(plan.frame, 4)),
+      fmt::format("fingers: pads '{}' and '{}' close along ({}) in the frame of '{}', approach ({}); gap {} mm open "
+                  "({} {}), {} mm closed ({} {}); {} mimic joint{}",
+                  plan.layout.pads[0], plan.layout.pads[1],
+                  fmt::format("{}, {}, {}", format_number(plan.layout.closing.x(), 3),
+                              format_number(plan.layout.closing.y(), 3), format_number(plan.layout.closing.z(), 3)),
+                  plan.layout.root,
+                  fmt::format("{}, {}, {}", format_number(plan.layout.approach.x(), 3),
+                              format_number(plan.layout.approach.y(), 3), format_number(plan.layout.approach.z(), 3)),
+                  format_number(plan.layout.gap_at(asset, plan.layout.open, plan.meshes) * 1000, 4),
+                  format_number(angular ? degrees_from_radians(plan.layout.open) : plan.layout.open, 4),
+                  angular ? "deg" : "m", format_number(plan.layout.gap_at(asset, plan.layout.closed, plan.meshes) * 1000, 4),
+                  format_number(angular ? degrees_from_radians(plan.layout.closed) : plan.layout.closed, 4),
+                  angular ? "deg" : "m", plan.layout.mimics.size(), plan.layout.mimics.size() == 1 ? "" : "s"),
+  };
+
+  backends::mujoco::MujocoEngine engine;
+  report.engine = engine.info(plan);
+  for (const verify::SceneSpec& scene : plan.scenes) {
+    if (!scene.not_run.empty()) {
+      report.scenes.push_back(verify::not_run(scene));
+      continue;
+    }
+    auto trajectory = engine.run(plan, scene, error);
+    if (!trajectory) return fail(fmt::format("{}: {}", path, error));
+    report.scenes.push_back(verify::judge(plan, scene, std::move(*trajectory), settings.verify));
+  }
+  if (format == "json") write_verify_json(out, report);
+  else write_verify_text(out, report, settings.verify);
+  if (plot && !write_text_file(*plot, verify_svg(report, plan, settings.verify), error)) return fail(error);
+  return report.passed() ? kExitClean : kExitFindings;
+}
+
+}  // namespace assetlint::commands

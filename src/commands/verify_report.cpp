@@ -1,0 +1,183 @@
+#include "commands/verify_report.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "util/numbers.h"
+#include "util/svg_chart.h"
+
+namespace assetlint::commands {
+namespace {
+
+std::string mm(double metres) { return format_number(metres * 1000, 3) + " mm"; }
+
+// The measurements of one scene, in the order a reader checks them.
+std::string measurements(const verify::SceneResult& r, const VerifySettings& limits) {
+  const verify::SceneMetrics& m = r.metrics;
+  std::vector<std::string> parts;
+  if (r.spec.kind == verify::SceneKind::Close) {
+    parts.push_back(m.close_time_s ? fmt::format("close time {} s", format_number(*m.close_time_s, 3))
+                                   : std::string("never closed"));
+    if (m.spec_close_time_s)
+      parts.push_back(fmt::format("spec {} s (−{} %/+{} %)", format_number(*m.spec_close_time_s, 3),
+                                  format_number(limits.close_time_under.value * 100),
+                                  format_number(limits.close_time_over.value * 100)));
+    if (m.peak_finger_speed_m_s) parts.push_back(fmt::format("peak finger speed {} m/s", format_number(*m.peak_finger_speed_m_s, 3)));
+  }
+  if (m.peak_penetration_m)
+    parts.push_back(fmt::format("penetration peak {} (< {}), steady {} (< {})", mm(*m.peak_penetration_m),
+                                mm(limits.peak_penetration_m.value), mm(*m.steady_penetration_m),
+                                mm(limits.steady_penetration_m.value)));
+  if (m.grip_force_n)
+    parts.push_back(m.required_grip_force_n
+                        ? fmt::format("grip {} N (m·g/μ = {} N)", format_number(*m.grip_force_n, 4),
+                                      format_number(*m.required_grip_force_n, 4))
+                        : fmt::format("grip {} N", format_number(*m.grip_force_n, 4)));
+  if (m.slip_m) parts.push_back(fmt::format("slip {} (< {})", mm(*m.slip_m), mm(limits.slip_m.value)));
+  if (m.jitter_m_s)
+    parts.push_back(fmt::format("jitter {} mm/s (< {} mm/s)", format_number(*m.jitter_m_s * 1000, 3),
+                                format_number(limits.jitter_m_s.value * 1000, 3)));
+  if (m.mimic_error_max) parts.push_back(fmt::format("mimic error {}", format_number(*m.mimic_error_max, 3)));
+  std::string text;
+  for (const auto& p : parts) text += (text.empty() ? "" : "; ") + p;
+  return text;
+}
+
+}  // namespace
+
+bool VerifyReport::passed() const {
+  // A scene not run was not verified: it never counts as passed.
+  return std::all_of(scenes.begin(), scenes.end(), [](const auto& s) { return s.ran && s.passed; });
+}
+
+void write_verify_text(std::ostream& out, const VerifyReport& report, const VerifySettings& limits) {
+  out << fmt::format("Verifying '{}' of {} in {} {}\n", report.joint, report.path, report.engine.name,
+                     report.engine.version);
+  out << "Inputs:\n";
+  for (const auto& line : report.inputs) out << "  " << line << "\n";
+  out << fmt::format("Engine: {} {}, timestep {} s, integrator {}, cone {}, impratio {}\n", report.engine.name,
+                     report.engine.version, format_number(report.engine.timestep_s, 4), report.engine.integrator,
+                     report.engine.cone, format_number(report.engine.impratio));
+  for (const auto& line : report.engine.translation) out << "  " << line << "\n";
+  out << fmt::format("Thresholds ([verify]): close time −{} %/+{} % ({}/{}), peak penetration {} ({}), steady {} ({}), "
+                     "slip {} ({}), jitter {} mm/s ({}) over the last {} s ({})\n",
+                     format_number(limits.close_time_under.value * 100), format_number(limits.close_time_over.value * 100),
+                     limits.close_time_under.origin, limits.close_time_over.origin, mm(limits.peak_penetration_m.value),
+                     limits.peak_penetration_m.origin, mm(limits.steady_penetration_m.value),
+                     limits.steady_penetration_m.origin, mm(limits.slip_m.value), limits.slip_m.origin,
+                     format_number(limits.jitter_m_s.value * 1000, 3), limits.jitter_m_s.origin,
+                     format_number(limits.window_s.value), limits.window_s.origin);
+  out << "\n";
+  std::size_t passed = 0, failed = 0, skipped = 0;
+  for (std::size_t i = 0; i < report.scenes.size(); ++i) {
+    const verify::SceneResult& r = report.scenes[i];
+    const std::string verdict = !r.ran ? "not run" : r.passed ? "pass" : "FAIL";
+    (!r.ran ? skipped : r.passed ? passed : failed) += 1;
+    out << fmt::format("{:>2}. {:<40} {:<7}  {}\n", i + 1, r.spec.name, verdict,
+                       r.ran ? measurements(r, limits) : r.spec.not_run);
+    if (r.ran && r.spec.object)
+      out << fmt::format("      box {} × {} × {} mm, {} kg, μ {}, met {}\n", format_number(r.spec.object->width * 1000, 3),
+                         format_number(r.spec.object->depth * 1000, 3), format_number(r.spec.object->height * 1000, 3),
+                         format_number(r.spec.object->mass, 4), format_number(r.spec.object->friction, 3),
+                         r.spec.object->sized_for);
+    for (const auto& failure : r.failures) out << "      " << failure << "\n";
+  }
+  out << fmt::format("\n{}: {} passed, {} failed, {} not run{}.\n",
+                     report.passed() ? "Passed" : failed ? "Failed" : "Not verified", passed, failed, skipped,
+                     skipped ? " (a scene not run is not verified)" : "");
+}
+
+void write_verify_json(std::ostream& out, const VerifyReport& report) {
+  using Json = nlohmann::ordered_json;
+  Json doc;
+  doc["file"] = report.path;
+  doc["engine"] = Json{{"name", report.engine.name},       {"version", report.engine.version},
+                       {"timestep_s", report.engine.timestep_s}, {"integrator", report.engine.integrator},
+                       {"cone", report.engine.cone},       {"impratio", report.engine.impratio}};
+  doc["passed"] = report.passed();
+  Json scenes = Json::array();
+  for (const verify::SceneResult& r : report.scenes) {
+    Json scene;
+    scene["name"] = r.spec.name;
+    scene["kind"] = std::string(verify::kind_name(r.spec.kind));
+    if (r.spec.object)
+      scene["object"] = Json{{"shape", r.spec.object->shape},
+                             {"width_m", r.spec.object->width},
+                             {"mass_kg", r.spec.object->mass},
+                             {"friction", r.spec.object->friction}};
+    else
+      scene["object"] = nullptr;
+    scene["gravity"] = r.spec.gravity;
+    scene["ran"] = r.ran;
+    scene["passed"] = r.ran && r.passed;
+    Json metrics = Json::object();
+    const verify::SceneMetrics& m = r.metrics;
+    const auto put = [&](const char* key, const std::optional<double>& v) {
+      if (v) metrics[key] = *v;
+    };
+    put("close_time_s", m.close_time_s);
+    put("spec_close_time_s", m.spec_close_time_s);
+    put("peak_penetration_m", m.peak_penetration_m);
+    put("steady_penetration_m", m.steady_penetration_m);
+    put("grip_force_n", m.grip_force_n);
+    put("required_grip_force_n", m.required_grip_force_n);
+    put("slip_m", m.slip_m);
+    put("jitter_m_s", m.jitter_m_s);
+    put("mimic_error_max", m.mimic_error_max);
+    if (m.diverged) metrics["diverged"] = *m.diverged;
+    scene["metrics"] = metrics;
+    Json failures = Json::array();
+    if (!r.ran) failures.push_back("not run: " + r.spec.not_run);
+    for (const auto& f : r.failures) failures.push_back(f);
+    scene["failures"] = failures;
+    scenes.push_back(scene);
+  }
+  doc["scenes"] = scenes;
+  out << doc.dump(2) << "\n";
+}
+
+std::string verify_svg(const VerifyReport& report, const verify::VerifyPlan& plan, const VerifySettings& limits) {
+  static const char* kColors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                  "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  Chart chart;
+  chart.title = fmt::format("asset-lint verify: '{}' of {} in {} {}", report.joint, report.path, report.engine.name,
+                            report.engine.version);
+  chart.x_label = "time (s)";
+  chart.x_max = 0;
+  ChartPanel opening{"finger opening (mm)", {}, {}, {}, {}, {}, {}};
+  ChartPanel height{"object height (mm)", {}, {}, {}, {}, {}, {}};
+  ChartPanel penetration{"penetration (mm)", {}, {}, {}, {}, {}, {}};
+  penetration.markers.push_back({"peak limit", "#d62728", limits.peak_penetration_m.value * 1000});
+  penetration.markers.push_back({"steady limit", "#ff7f0e", limits.steady_penetration_m.value * 1000});
+  std::size_t index = 0;
+  for (const verify::SceneResult& r : report.scenes) {
+    if (!r.ran || r.trajectory.samples.empty()) continue;
+    const std::string color = kColors[index++ % 10];
+    ChartSeries gap{r.spec.name, color, {}, {}, false}, lift{r.spec.name, color, {}, {}, false},
+        depth{r.spec.name, color, {}, {}, false};
+    const auto& first = r.trajectory.samples.front();
+    for (const verify::Sample& s : r.trajectory.samples) {
+      std::map<std::string, Eigen::Isometry3d, std::less<>> poses{{plan.layout.pads[0], s.pads[0]},
+                                                                    {plan.layout.pads[1], s.pads[1]}};
+      gap.x.push_back(s.t);
+      gap.y.push_back(plan.layout.gap(*plan.asset, poses, plan.meshes) * 1000);
+      if (r.spec.object) {
+        lift.x.push_back(s.t);
+        lift.y.push_back(-(s.object - first.object).dot(plan.layout.approach) * 1000);
+        depth.x.push_back(s.t);
+        depth.y.push_back(s.penetration * 1000);
+      }
+    }
+    chart.x_max = std::max(chart.x_max, r.trajectory.samples.back().t);
+    opening.series.push_back(std::move(gap));
+    if (!lift.x.empty()) height.series.push_back(std::move(lift));
+    if (!depth.x.empty()) penetration.series.push_back(std::move(depth));
+  }
+  if (chart.x_max <= 0) chart.x_max = 1;
+  chart.panels = {opening, height, penetration};
+  return render_svg(chart);
+}
+
+}  // namespace assetlint::commands

@@ -1,0 +1,27 @@
+#pragma once
+// How `asset-lint verify` prints its results: text, JSON (docs/verify.md) and the SVG plot.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "verify/engine.h"
+#include "verify/metrics.h"
+
+namespace assetlint::commands {
+
+struct VerifyReport {
+  std::string path;
+  std::string joint;
+  std::vector<std::string> inputs;  // each input with where it came from
+  verify::EngineInfo engine;
+  std::vector<verify::SceneResult> scenes;
+  bool angular = true;
+  bool passed() const;
+};
+
+void write_verify_text(std::ostream& out, const VerifyReport& report, const VerifySettings& limits);
+void write_verify_json(std::ostream& out, const VerifyReport& report);
+// Finger opening, object height and penetration over time, one panel each, every scene a line.
+std::string verify_svg(const VerifyReport& report, const verify::VerifyPlan& plan, const VerifySettings& limits);
+
+}  // namespace assetlint::commands

@@ -1,0 +1,199 @@
+// `asset-lint verify`: the guide's scenes stepped in MuJoCo on a gripper whose answers are
+// known by hand (fixtures/verify/two_finger: two 50 g prismatic box fingers, one a mimic).
+// The drive pushes the driven finger with F; the mimic constraint carries the other finger's
+// reaction back, so each pad presses with F/2 and friction holds 2·μ·(F/2) = μ·F. The box of
+// 0.5 kg at g = 10 with μ = 0.5 needs F ≥ m·g/μ = 10 N.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "test_support.h"
+
+using assetlint::test::read_file;
+using assetlint::test::replace_once;
+using assetlint::test::run_cli;
+using assetlint::test::write_file;
+
+namespace {
+
+const std::filesystem::path kFixture = assetlint::test::fixtures_dir() / "verify" / "two_finger";
+
+// The fixture in a temporary directory, its asset-lint.toml edited by `edit`.
+struct TwoFinger {
+  assetlint::test::TempDir dir;
+  explicit TwoFinger(const std::function<std::string(std::string)>& edit = [](std::string t) { return t; },
+                     const std::function<std::string(std::string)>& edit_urdf = [](std::string t) { return t; }) {
+    write_file(dir.path() / "two_finger.urdf", edit_urdf(read_file(kFixture / "two_finger.urdf")));
+    write_file(dir.path() / "asset-lint.toml", edit(read_file(kFixture / "asset-lint.toml")));
+  }
+  assetlint::test::CommandResult run(std::vector<std::string> extra = {}) const {
+    std::vector<std::string> args = {"verify", "two_finger.urdf", "--output-format", "json"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli(args, dir.path());
+  }
+};
+
+const nlohmann::json& scene(const nlohmann::json& report, const std::string& kind, int nth = 0) {
+  for (const auto& s : report["scenes"])
+    if (s["kind"] == kind && nth-- == 0) return s;
+  FAIL("no scene " << kind);
+  static nlohmann::json none;
+  return none;
+}
+
+}  // namespace
+
+TEST_CASE("verify: twice the required squeeze holds at every width and the close time is stroke/(2·finger speed)",
+          "[verify]") {
+  TwoFinger gripper;
+  const auto r = gripper.run();
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto report = nlohmann::json::parse(r.out);
+  CHECK(report["passed"] == true);
+  CHECK(report["engine"]["name"] == "mujoco");
+  CHECK(report["engine"]["timestep_s"].get<double>() == Approx(0.001));  // 250 Hz / 4 position iterations
+  CHECK(report["engine"]["cone"] == "elliptic");
+  REQUIRE(report["scenes"].size() == 8);
+  // Close: 45 mm per finger at 0.1 m/s is 0.45 s; the target ramps at the 0.1 m/s max velocity.
+  const auto& close = scene(report, "close");
+  CHECK(close["object"].is_null());
+  CHECK(close["metrics"]["spec_close_time_s"].get<double>() == Approx(0.45));
+  CHECK(close["metrics"]["close_time_s"].get<double>() == Approx(0.45).epsilon(0.05));
+  // The boxes: met at 10 % and 50 % of the 45 mm stroke and at the guide's 0.01 m (5 mm before closed):
+  // gaps 90 − 2·4.5 = 81 mm, 90 − 2·22.5 = 45 mm and 10 mm.
+  CHECK(scene(report, "grasp", 0)["object"]["width_m"].get<double>() == Approx(0.081));
+  CHECK(scene(report, "grasp", 1)["object"]["width_m"].get<double>() == Approx(0.045));
+  CHECK(scene(report, "grasp", 2)["object"]["width_m"].get<double>() == Approx(0.010));
+  for (int i = 0; i < 3; ++i) {
+    const auto& grasp = scene(report, "grasp", i)["metrics"];
+    CHECK(grasp["required_grip_force_n"].get<double>() == Approx(10.0));
+    // The spring is past its 20 N max force at the two wider boxes; at the 10 mm box it is k·Δ = 4000 N/m × 5 mm
+    // = 20 N less the sub-millimetre penetration.
+    CHECK(grasp["grip_force_n"].get<double>() == Approx(20.0).epsilon(0.05));
+    CHECK(grasp["peak_penetration_m"].get<double>() < 0.002);
+    CHECK(grasp["mimic_error_max"].get<double>() < 1e-3);
+    const auto& hold = scene(report, "hold", i)["metrics"];
+    CHECK(hold["slip_m"].get<double>() < 0.005);
+    CHECK(hold["diverged"] == false);
+  }
+  CHECK(scene(report, "lift")["passed"] == true);
+  CHECK(scene(report, "lift")["metrics"]["slip_m"].get<double>() < 0.005);
+}
+
+TEST_CASE("verify: half the required squeeze slips and fails", "[verify]") {
+  // 5 N: μ·F = 2.5 N of friction against the box's 5 N weight.
+  TwoFinger gripper(
+      [](std::string t) {
+        t = replace_once(t, "stiffness = 4000", "stiffness = 1000");
+        t = replace_once(t, "damping = 40", "damping = 20");
+        return replace_once(t, "max_force = 20", "max_force = 5");
+      });
+  const auto r = gripper.run();
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 1);
+  const auto report = nlohmann::json::parse(r.out);
+  CHECK(report["passed"] == false);
+  for (int i = 0; i < 3; ++i) {
+    const auto& hold = scene(report, "hold", i);
+    CHECK(hold["passed"] == false);
+    CHECK(hold["metrics"]["slip_m"].get<double>() > 0.005);
+    const auto& grasp = scene(report, "grasp", i);
+    CHECK(grasp["metrics"]["grip_force_n"].get<double>() == Approx(5.0).epsilon(0.05));
+    CHECK(grasp["failures"][0].get<std::string>().find("grip force") != std::string::npos);
+  }
+  CHECK(scene(report, "lift")["passed"] == false);
+}
+
+TEST_CASE("verify: a too-stiff undamped drive at a coarse step fails", "[verify]") {
+  // h = 4 ms (250 Hz, one iteration); k = 4e6 N/m on 0.1 kg: h·nf = 0.004 × 6325 = 25, no damping.
+  TwoFinger gripper([](std::string t) {
+    t = replace_once(t, "position_iterations = 4", "position_iterations = 1");
+    t = replace_once(t, "stiffness = 4000", "stiffness = 4000000");
+    return replace_once(t, "damping = 40", "damping = 0");
+  });
+  const auto r = gripper.run();
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 1);
+  const auto report = nlohmann::json::parse(r.out);
+  int failed = 0;
+  for (const auto& s : report["scenes"]) failed += s["passed"] == false ? 1 : 0;
+  CHECK(failed >= 4);
+  const auto& grasp = scene(report, "grasp", 1);
+  CHECK(grasp["passed"] == false);
+  CHECK((grasp["metrics"]["diverged"] == true || grasp["metrics"]["jitter_m_s"].get<double>() > 0.001));
+}
+
+TEST_CASE("verify: two runs give byte-identical JSON and the text names every input's origin", "[verify]") {
+  TwoFinger gripper;
+  const auto a = gripper.run(), b = gripper.run();
+  CHECK(a.out == b.out);
+  const auto text = run_cli({"verify", "two_finger.urdf"}, gripper.dir.path());
+  CHECK(text.exit_code == 0);
+  CHECK(text.out.find("payload 0.5 kg (asset-lint.toml:") != std::string::npos);
+  CHECK(text.out.find("stiffness 4000 N/m (asset-lint.toml:") != std::string::npos);
+  CHECK(text.out.find("max velocity 0.1 m/s (two_finger.urdf:") != std::string::npos);
+  CHECK(text.out.find("Passed: 8 passed, 0 failed, 0 not run.") != std::string::npos);
+}
+
+TEST_CASE("verify: --plot writes an SVG that rsvg-convert renders", "[verify]") {
+  TwoFinger gripper;
+  const auto r = gripper.run({"--plot", "verify.svg"});
+  REQUIRE(r.exit_code == 0);
+  const std::string svg = read_file(gripper.dir.path() / "verify.svg");
+  CHECK(svg.find("finger opening (mm)") != std::string::npos);
+  CHECK(svg.find("object height (mm)") != std::string::npos);
+  CHECK(svg.find("penetration (mm)") != std::string::npos);
+  if (std::system("command -v rsvg-convert >/dev/null 2>&1") != 0) {
+    if (assetlint::test::in_ci()) FAIL("rsvg-convert missing under CI=true (scripts/bootstrap.sh installs librsvg2-bin)");
+    WARN("rsvg-convert not installed (Debian librsvg2-bin, scripts/bootstrap.sh): SVG rendering not checked");
+    return;
+  }
+  const auto png = gripper.dir.path() / "verify.png";
+  const std::string command =
+      "rsvg-convert -w 800 -o '" + png.string() + "' '" + (gripper.dir.path() / "verify.svg").string() + "'";
+  CHECK(std::system(command.c_str()) == 0);
+  CHECK(std::filesystem::file_size(png) > 10000);
+}
+
+TEST_CASE("verify: scenes without a payload are not run and say why, errors exit 2 naming what is missing",
+          "[verify]") {
+  SECTION("no payload") {
+    TwoFinger gripper([](std::string t) { return replace_once(t, "payload_kg = 0.5\n", ""); });
+    const auto r = gripper.run();
+    CHECK(r.exit_code == 1);
+    const auto report = nlohmann::json::parse(r.out);
+    CHECK(report["passed"] == false);
+    CHECK(scene(report, "close")["ran"] == true);
+    const auto& hold = scene(report, "hold");
+    CHECK(hold["ran"] == false);
+    CHECK(hold["passed"] == false);
+    CHECK(hold["failures"][0].get<std::string>().find("[gripper] payload_kg") != std::string::npos);
+  }
+  SECTION("no collision geometry on the fingers") {
+    TwoFinger gripper([](std::string t) { return t; },
+                      [](std::string t) {
+                        for (int i = 0; i < 2; ++i)
+                          t = replace_once(t, "<collision><geometry><box size=\"0.01 0.02 0.06\"/></geometry></collision>", "");
+                        return t;
+                      });
+    const auto r = gripper.run();
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("no collision geometry on the fingers") != std::string::npos);
+    CHECK(r.err.find("'left_finger', 'right_finger'") != std::string::npos);
+  }
+  SECTION("no drive stiffness") {
+    TwoFinger gripper([](std::string t) { return replace_once(t, "stiffness = 4000\n", ""); });
+    const auto r = gripper.run();
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("[drives.finger_joint] stiffness") != std::string::npos);
+  }
+  SECTION("an unknown [verify] key") {
+    TwoFinger gripper([](std::string t) { return t + "slip = 1\n"; });
+    const auto r = gripper.run();
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("slip") != std::string::npos);
+  }
+}
