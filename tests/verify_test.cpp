@@ -118,12 +118,16 @@ TEST_CASE("verify: a too-stiff undamped drive at a coarse step fails", "[verify]
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 1);
   const auto report = nlohmann::json::parse(r.out);
-  int failed = 0;
-  for (const auto& s : report["scenes"]) failed += s["passed"] == false ? 1 : 0;
-  CHECK(failed >= 4);
-  const auto& grasp = scene(report, "grasp", 1);
-  CHECK(grasp["passed"] == false);
-  CHECK((grasp["metrics"]["diverged"] == true || grasp["metrics"]["jitter_m_s"].get<double>() > 0.001));
+  // The fingers slam into the boxes: every box scene fails, on penetration, jitter or divergence.
+  for (const auto& s : report["scenes"]) {
+    if (s["kind"] == "close") continue;
+    INFO(s["name"]);
+    CHECK(s["passed"] == false);
+    const std::string failure = s["failures"][0].get<std::string>();
+    CHECK((failure.find("penetration") != std::string::npos || failure.find("jitter") != std::string::npos ||
+           failure.find("diverged") != std::string::npos));
+  }
+  CHECK(scene(report, "grasp", 1)["metrics"]["peak_penetration_m"].get<double>() > 0.002);
 }
 
 TEST_CASE("verify: two runs give byte-identical JSON and the text names every input's origin", "[verify]") {

@@ -12,6 +12,8 @@
 #include "commands/exit_status.h"
 #include "commands/tune_derivation.h"
 #include "commands/verify_report.h"
+#include "config/project_root.h"
+#include "formats/mesh/mesh_points.h"
 #include "physics/gripper.h"
 #include "physics/sizing.h"
 #include "util/numbers.h"
@@ -58,7 +60,9 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   const Settings& settings = input.settings;
   const Asset& asset = input.loaded.read.asset;
   if (asset.format != SourceFormat::Urdf)
-    return fail(fmt::format("{}: verify reads URDF grippers (with box, cylinder and sphere collision shapes)", path));
+    return fail(fmt::format("{}: verify reads URDF grippers (collision boxes, cylinders, spheres and STL, OBJ or "
+                            "Collada meshes)",
+                            path));
   std::string error;
   const Joint* joint = tune_joint(asset, settings, std::nullopt, error);
   if (!joint) return fail(fmt::format("{}: {}", path, error));
@@ -67,16 +71,21 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
     return fail(fmt::format("{}: joint '{}' has no drive stiffness: set [drives.{}] stiffness and damping in "
                             "asset-lint.toml (`asset-lint tune --apply` derives them)",
                             path, joint->name.text, joint->name.text));
-  for (const Link& link : asset.links)
-    for (const CollisionShape& shape : link.collisions)
-      if (shape.kind == CollisionShape::Kind::Mesh)
-        return fail(fmt::format("{}: link '{}' collides with the mesh '{}': verify reads box, cylinder and sphere "
-                                "collision shapes",
-                                path, link.name.text, shape.mesh));
-
   verify::VerifyPlan plan;
   plan.asset = &asset;
   plan.asset_dir = std::filesystem::path(path).parent_path().string();
+  // Collision meshes, each read once; visual meshes are not in the model and never read.
+  std::vector<std::string> link_names;
+  for (const Link& link : asset.links) link_names.push_back(link.name.text);
+  const std::string root = config::checked_root(path, settings);
+  for (const std::string& filename : verify::collision_meshes(asset, link_names)) {
+    const auto file = mesh::resolve_mesh(filename, plan.asset_dir.empty() ? "." : plan.asset_dir,
+                                         root.empty() ? (plan.asset_dir.empty() ? "." : plan.asset_dir) : root, error);
+    if (!file) return fail(fmt::format("{}: {}", path, error));
+    auto points = mesh::read_points(*file, error);
+    if (!points) return fail(fmt::format("{}: {}", path, error));
+    plan.meshes[filename] = std::move(*points);
+  }
   auto layout = verify::gripper_layout(asset, *joint, error);
   if (!layout) return fail(fmt::format("{}: {}", path, error));
   plan.layout = std::move(*layout);

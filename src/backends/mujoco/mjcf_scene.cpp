@@ -121,22 +121,24 @@ class Writer {
       if (joint->armature && joint->armature->value > 0) out_ += fmt::format(" armature=\"{}\"", num(joint->armature->value));
       out_ += "/>\n";
     }
-    if (link->inertial && link->inertial->mass_authored && link->inertial->mass.value > 0) {
+    const bool massive = has_authored_mass(*link);
+    if (massive) {
       const Inertial& in = *link->inertial;
       const Eigen::Matrix3d& i = in.inertia;
       out_ += fmt::format("{}  <inertial pos=\"{}\" mass=\"{}\" fullinertia=\"{} {} {} {} {} {}\"/>\n", pad, vec(in.com),
                           num(in.mass.value), num(i(0, 0)), num(i(1, 1)), num(i(2, 2)), num(i(0, 1)), num(i(0, 2)),
                           num(i(1, 2)));
-    } else if (joint) {
-      error = fmt::format("link '{}' moves (joint '{}') but has no mass: MuJoCo cannot step a massless moving body; "
+    } else if (joint && link->collisions.empty()) {
+      error = fmt::format("link '{}' moves (joint '{}') but has neither a mass nor collision shapes to take one from: "
                           "author its <inertial>",
                           name, joint->name.text);
       return false;
     }
     std::size_t k = 0;
     for (const CollisionShape& shape : link->collisions) {
-      out_ += fmt::format("{}  <geom name=\"g{}_{}\" {} density=\"0\" contype=\"1\" conaffinity=\"2\" {}/>\n", pad,
-                          *asset_.index_of(*link), k++, pose_attributes(shape.pose), geometry(shape));
+      out_ += fmt::format("{}  <geom name=\"g{}_{}\" {} density=\"{}\" contype=\"1\" conaffinity=\"2\" {}/>\n", pad,
+                          *asset_.index_of(*link), k++, pose_attributes(shape.pose),
+                          massive ? std::string("0") : num(kShapeDensity), geometry(shape));
     }
     for (const Joint* child : asset_.joints_at(name)) {
       if (child->parent.text != name) continue;
@@ -190,6 +192,10 @@ class Writer {
 };
 
 }  // namespace
+
+bool has_authored_mass(const Link& link) {
+  return link.inertial && link.inertial->mass_authored && link.inertial->mass.value > 0;
+}
 
 std::string body_name(const Asset& asset, const Link& link) { return fmt::format("b{}", *asset.index_of(link)); }
 std::string joint_name(const Asset& asset, const Joint& joint) { return fmt::format("j{}", *asset.index_of(joint)); }

@@ -14,6 +14,12 @@ inline constexpr const char* kIntegrator = "implicit";
 inline constexpr const char* kCone = "elliptic";
 inline constexpr double kImpratio = 10;
 inline constexpr double kMountMass = 1.0;  // kg: the free body welded to the mocap mount
+// kg/m³: a link without an authored mass takes it from its collision shapes at this density,
+// as PhysX does for a body whose mass is not authored.
+inline constexpr double kShapeDensity = 1000.0;
+
+// Whether the model gives the link a mass (else the engine derives it from its shapes).
+bool has_authored_mass(const Link& link);
 
 // The generated names the runner looks up.
 std::string body_name(const Asset& asset, const Link& link);   // "b<index>"

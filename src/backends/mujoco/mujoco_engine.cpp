@@ -66,6 +66,16 @@ Eigen::Isometry3d body_pose(const mjData* d, int body) {
   return pose;
 }
 
+std::string shape_mass_note(const VerifyPlan& plan) {
+  std::string links;
+  for (const Link& link : plan.asset->links)
+    if (!has_authored_mass(link) && !link.collisions.empty()) links += (links.empty() ? "'" : ", '") + link.name.text + "'";
+  if (links.empty()) return "Mass: every link's own.";
+  return fmt::format("Mass: links without an authored mass ({}) take it from their collision shapes at {} kg/m³, as "
+                     "PhysX does for a body whose mass is not authored.",
+                     links, format_number(kShapeDensity));
+}
+
 }  // namespace
 
 verify::EngineInfo MujocoEngine::info(const VerifyPlan& plan) const {
@@ -100,6 +110,7 @@ verify::EngineInfo MujocoEngine::info(const VerifyPlan& plan) const {
                   "sub-millimetre penetration; the spec's μ on the object and on every gripper geom, because MuJoCo "
                   "takes the larger of the two and defaults to 1.",
                   format_number(kImpratio), format_number(2 * plan.timestep, 3)),
+      shape_mass_note(plan),
       fmt::format("Mount: the base link rides a {} kg free body welded to a kinematic (mocap) mount that lifts it; the "
                   "gripper's own links do not collide with each other.",
                   format_number(kMountMass)),
