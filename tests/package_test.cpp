@@ -35,7 +35,11 @@ TEST_CASE("package: cpack -G DEB makes a package with the binary, man page, docs
   CHECK(out.find(" Package: asset-lint\n") != std::string::npos);
   CHECK(out.find(std::string(" Version: ") + ASSET_LINT_VERSION + "\n") != std::string::npos);
   // Dependencies computed by dpkg-shlibdeps from what the binary links.
-  CHECK(out.find(" Depends: libc6 (>= ") != std::string::npos);
+  const auto depends = out.find(" Depends: ");
+  REQUIRE(depends != std::string::npos);
+  const std::string depends_line = out.substr(depends, out.find('\n', depends) - depends);
+  CHECK(depends_line.find("libc6 (>= ") != std::string::npos);
+  CHECK(depends_line.find("libmujoco") != std::string::npos);
   CHECK(out.find("libfmt") != std::string::npos);
 
   REQUIRE(run_shell("dpkg-deb -c " + package, dir.path() / "contents.log", out) == 0);
