@@ -33,6 +33,7 @@ bool seeds(const std::string& target, const fs::path& file) {
   if (target == "usda_fuzz") return file.extension() == ".usda";
   if (target == "mjcf_fuzz") return file.extension() == ".xml";
   if (target == "config_fuzz") return name == "asset-lint.toml";
+  if (target == "xacro_fuzz") return file.extension() == ".xacro";
   return false;
 }
 

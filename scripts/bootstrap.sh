@@ -8,6 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   liburdfdom-dev libtinyxml2-dev libeigen3-dev libfmt-dev libcli11-dev
   catch2 libtomlplusplus-dev nlohmann-json3-dev
+  libyaml-cpp-dev  # xacro.load_yaml in .xacro files
   libmujoco-dev
   libassimp-dev  # Collada collision meshes for `asset-lint verify`
   librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot

@@ -160,3 +160,42 @@ TEST_CASE("hostile: --max-file-size names the file and the others are still chec
   CHECK(r.err.find("is 2.0 MiB (2097153 bytes), over the 2 MiB limit (--max-file-size)") != std::string::npos);
   CHECK(r.out.find("1 file") != std::string::npos);
 }
+
+TEST_CASE("hostile: xacro recursion, include cycles and exponential expansion end with a named error", "[hostile][xacro]") {
+  test::TempDir dir;
+  const auto lint = [&](const std::string& name, const std::string& body) {
+    test::write_file(dir.path() / name, "<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">" + body + "</robot>");
+    return lint_file((dir.path() / name).string(), Settings{});
+  };
+  const auto message = [](const FileReport& report) {
+    REQUIRE(report.diagnostics.size() == 1);
+    CHECK(report.diagnostics[0].rule == "parse-error");
+    return report.diagnostics[0].message;
+  };
+
+  const FileReport recursive = lint("recursive.xacro", R"xml(<xacro:macro name="a"><xacro:b/></xacro:macro>
+<xacro:macro name="b"><xacro:a/></xacro:macro><xacro:a/>)xml");
+  CHECK(message(recursive).find("xacro: macro calls nested deeper than 100 (… → a → b → a → b → a → b → a)xml") == 0);
+  CHECK(recursive.diagnostics[0].notes.size() == 100);
+
+  test::write_file(dir.path() / "loop.xacro",
+                   R"xml(<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:include filename="cycle.xacro"/></robot>)xml");
+  const FileReport cycle = lint("cycle.xacro", R"xml(<xacro:include filename="loop.xacro"/>)xml");
+  CHECK(message(cycle) == "xacro: include cycle: cycle.xacro → loop.xacro → cycle.xacro");
+
+  // Each macro calls the next one twice: 2^40 links if nothing stopped it.
+  std::string doubling = R"xml(<xacro:macro name="m0"><link name="l"/></xacro:macro>)";
+  for (int i = 1; i <= 40; ++i)
+    doubling += "<xacro:macro name=\"m" + std::to_string(i) + "\"><xacro:m" + std::to_string(i - 1) + "/><xacro:m" +
+                std::to_string(i - 1) + "/></xacro:macro>";
+  const FileReport exponential = lint("exponential.xacro", doubling + "<xacro:m40/>");
+  CHECK(message(exponential).find("xacro: the expansion exceeds 64 MiB") == 0);
+
+  // Lazy properties that double a string: bounded by what one expression may build.
+  std::string strings = R"xml(<xacro:property name="p0" value="xxxxxxxxxxxxxxxx"/>)";
+  for (int i = 1; i <= 40; ++i)
+    strings += "<xacro:property name=\"p" + std::to_string(i) + "\" value=\"${p" + std::to_string(i - 1) + " + p" +
+               std::to_string(i - 1) + "}\"/>";
+  const FileReport doubled = lint("strings.xacro", strings + "<link name=\"${p40}\"/>");
+  CHECK(message(doubled).find("MiB an expression may build") != std::string::npos);
+}

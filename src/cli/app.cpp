@@ -17,6 +17,7 @@
 #include "commands/exit_status.h"
 #include "commands/fix.h"
 #include "commands/stdin.h"
+#include "commands/expand.h"
 #include "commands/simulate.h"
 #include "commands/tune.h"
 #include "commands/verify.h"
@@ -168,6 +169,7 @@ int run(const std::vector<std::string>& args, std::istream& in, std::ostream& ou
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
   if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "verify") return commands::run_verify({args.begin() + 1, args.end()}, out, err);
+  if (!args.empty() && args.front() == "expand") return commands::run_expand({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "simulate")
     return commands::run_simulate({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "check")

@@ -13,7 +13,7 @@ namespace assetlint::cli {
 namespace {
 
 void add_options(CLI::App& app, Options& o) {
-  app.add_option("paths", o.paths, "Files or directories to check (directories: every *.urdf, *.usda, *.mjcf and MJCF *.xml below)");
+  app.add_option("paths", o.paths, "Files or directories to check (directories: every *.urdf, *.usda, *.mjcf, MJCF *.xml and top-level *.xacro below)");
   app.add_option("--select", o.select, "Only these rules (comma list, globs such as 'mimic-*')")
       ->delimiter(',')
       ->allow_extra_args(false);
@@ -68,6 +68,8 @@ void add_options(CLI::App& app, Options& o) {
                  "the directory of its asset-lint.toml, else the directory named or the working directory)")
       ->check(CLI::ExistingDirectory);
   app.add_flag("--allow-outside-root", o.allow_outside_root, "Let USD composition read layers outside the checked tree");
+  app.add_option("--xacro-arg", o.xacro_args, "A xacro argument's value, name:=value (repeatable; wins over [xacro] args)")
+      ->check([](const std::string& s) { return s.find(":=") == std::string::npos ? "expected name:=value" : std::string(); });
   app.add_option("--max-file-size", o.max_file_mib,
                  "Files and layers larger than this many MiB are not read (an error names them; default 512)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 20));
@@ -86,7 +88,7 @@ void add_options(CLI::App& app, Options& o) {
                  "Print the settings a check of FILE would use, each with where it came from, and exit");
   app.add_flag("--version", o.version, "Print the version and exit");
   app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint rule RULE-ID      print a rule's documentation (rule --all: every rule)\n\n"
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint expand FILE.xacro print the URDF a .xacro file expands to\n  asset-lint rule RULE-ID      print a rule's documentation (rule --all: every rule)\n\n"
       "Exit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
       "remain, 2 usage, configuration or I/O error.\n"
       "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
@@ -189,6 +191,10 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   overrides.timesteps_per_second = o.timesteps_per_second;
   if (o.position_iterations) overrides.position_iterations = static_cast<double>(*o.position_iterations);
   overrides.allow_outside_root = o.allow_outside_root;
+  for (const auto& arg : o.xacro_args) {
+    const auto at = arg.find(":=");
+    overrides.xacro_args.emplace_back(arg.substr(0, at), arg.substr(at + 2));
+  }
   overrides.root = o.root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : o.paths)

@@ -29,6 +29,7 @@ struct Options {
   bool exclude_given = false, no_respect_gitignore = false, force_exclude = false;
   std::string baseline, write_baseline;  // --baseline FILE, --write-baseline FILE
   bool allow_outside_root = false;
+  std::vector<std::string> xacro_args;  // --xacro-arg name:=value
   std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read
   std::string root;  // --root
   std::optional<double> timesteps_per_second;

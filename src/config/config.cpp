@@ -34,6 +34,7 @@ class Loader {
       else if (name == "verify") verify(table(node, name));
       else if (name == "drives") drives(table(node, name));
       else if (name == "rules") rules(table(node, name));
+      else if (name == "xacro") xacro(table(node, name));
       else unknown(key, "");
     }
     // After the loop: `extend-select` adds to `select` wherever the two stand in the file.
@@ -145,6 +146,29 @@ class Loader {
         entry.rules.push_back(std::move(rule.value));
       entry.origin = origin(node);
       settings_.per_file_ignores.push_back(std::move(entry));
+    }
+  }
+
+  // [xacro] args = { name = "value" }, entry_points = ["robot.urdf.xacro"]
+  void xacro(const toml::table& t) {
+    for (const auto& [key, node] : t) {
+      const std::string_view k = key.str();
+      if (k == "args") {
+        for (const auto& [arg, value] : table(node, "args")) {
+          if (const auto* s = value.as_string()) settings_.xacro.args[std::string(arg.str())] = Configured<std::string>{s->get(), origin(value)};
+          else if (const auto* b = value.as_boolean()) settings_.xacro.args[std::string(arg.str())] = Configured<std::string>{b->get() ? "true" : "false", origin(value)};
+          else if (value.is_number()) settings_.xacro.args[std::string(arg.str())] = Configured<std::string>{value.is_integer() ? std::to_string(value.as_integer()->get()) : fmt::format("{}", value.as_floating_point()->get()), origin(value)};
+          else fail(value, fmt::format("xacro argument '{}' must be a string, number or boolean", arg.str()));
+        }
+      } else if (k == "entry_points") {
+        const auto* array = node.as_array();
+        if (!array) fail(node, "'entry_points' must be an array of .xacro paths");
+        std::vector<std::string> paths;
+        for (const auto& item : *array) paths.push_back((base_ / string(item, "entry_points")).lexically_normal().string());
+        if (files_) files_->xacro_entry_points = std::move(paths);
+      } else {
+        unknown(key, "xacro");
+      }
     }
   }
 

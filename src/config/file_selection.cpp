@@ -42,6 +42,7 @@ FileSelection effective_file_selection(const std::optional<FileSelectionConfig>&
   for (auto& pattern : from_command_line(overrides.extend_exclude, "--extend-exclude"))
     selection.exclude.push_back(std::move(pattern));
   if (config && config->respect_gitignore) selection.respect_gitignore = *config->respect_gitignore;
+  if (config && config->xacro_entry_points) selection.xacro_entry_points = *config->xacro_entry_points;
   if (overrides.no_respect_gitignore) selection.respect_gitignore = {false, "--no-respect-gitignore"};
   selection.force_exclude = overrides.force_exclude;
   return selection;

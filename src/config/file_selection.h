@@ -21,6 +21,7 @@ struct FileSelectionConfig {
   std::optional<std::vector<ExcludePattern>> exclude;  // replaces the default
   std::vector<ExcludePattern> extend_exclude;
   std::optional<Configured<bool>> respect_gitignore;
+  std::optional<std::vector<std::string>> xacro_entry_points;  // [xacro] entry_points, absolute
 };
 
 // As the command line sets it; wins over every configuration file.
@@ -38,6 +39,9 @@ struct FileSelection {
   std::vector<ExcludePattern> exclude;  // in effect: exclude (or the default), then extend-exclude
   Configured<bool> respect_gitignore{true, "default"};
   bool force_exclude = false;
+  // The .xacro files a directory walk expands ([xacro] entry_points, absolute); empty: the
+  // files no other .xacro file includes.
+  std::vector<std::string> xacro_entry_points;
 
   // The pattern that excludes `path` (any spelling); nullptr when none does.
   const ExcludePattern* excluding(const std::string& path) const;

@@ -21,6 +21,7 @@ const Settings& SettingsResolver::load(const std::string& config_path, std::opti
   settings->trees = overrides_.trees;
   settings->root = overrides_.root;
   settings->allow_outside_root = overrides_.allow_outside_root;
+  for (const auto& [name, value] : overrides_.xacro_args) settings->xacro.args[name] = Configured<std::string>{value, "--xacro-arg"};
   return *by_config_.emplace(config_path, std::move(settings)).first->second;
 }
 

@@ -84,8 +84,14 @@ struct PerFileIgnore {
   std::string origin;  // "asset-lint.toml:12"
 };
 
+// [xacro] and --xacro-arg: the values of xacro arguments ($(arg name)).
+struct XacroSettings {
+  std::map<std::string, Configured<std::string>, std::less<>> args;
+};
+
 struct Settings {
   RuleSelection selection;
+  XacroSettings xacro;
   std::vector<PerFileIgnore> per_file_ignores;
   SimulationSettings simulation;
   GripperSpec gripper;

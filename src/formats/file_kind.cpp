@@ -20,6 +20,7 @@ FileKind file_kind(const std::string& path) {
   if (ext == ".usd") return FileKind::Usd;
   if (ext == ".usdc" || ext == ".usdz") return FileKind::BinaryUsd;
   if (ext == ".mjcf" || ext == ".xml") return FileKind::Mjcf;
+  if (ext == ".xacro") return FileKind::Xacro;
   return FileKind::Unsupported;
 }
 

@@ -7,7 +7,7 @@ namespace assetlint {
 // Which reader a file needs, by its extension (case-insensitive). A `.usd` file may be
 // text or a binary crate: `Usd` until its first bytes say which (usd_kind). `.mjcf` and
 // `.xml` are MJCF (a `.xml` until its text says otherwise, see below).
-enum class FileKind { Urdf, Usda, Usd, BinaryUsd, Mjcf, Unsupported };
+enum class FileKind { Urdf, Usda, Usd, BinaryUsd, Mjcf, Xacro, Unsupported };
 FileKind file_kind(const std::string& path);
 // The same, with the text to decide what a `.xml` file is: MJCF when its root element is
 // <mujoco>, URDF when it is <robot>, otherwise unsupported.

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -13,6 +14,10 @@ struct ReadResult {
   Asset asset;
   std::vector<Diagnostic> diagnostics;
   bool usable = true;  // false: the model is incomplete; rules must not run on it
+  // Set when the model was read from generated text (a xacro file's expansion): moves every
+  // finding, its notes and fixes from that text to the files a person edits, and returns
+  // those files (the asset's sources from then on).
+  std::function<std::vector<std::shared_ptr<const SourceFile>>(std::vector<Diagnostic>&)> relocate;
 };
 
 }  // namespace assetlint

@@ -60,7 +60,7 @@ std::optional<SuppressionComment> parse_directive(std::string_view body, std::si
 CommentSyntax comment_syntax_for(std::string_view path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".urdf" || ext == ".xml" || ext == ".mjcf" ? CommentSyntax::Xml : CommentSyntax::Usda;
+  return ext == ".urdf" || ext == ".xml" || ext == ".mjcf" || ext == ".xacro" ? CommentSyntax::Xml : CommentSyntax::Usda;
 }
 
 std::string suppression_comment(CommentSyntax syntax, bool file_level, const std::vector<std::string>& rules) {

@@ -8,6 +8,7 @@
 
 #include "engine/file_system.h"
 #include "formats/file_kind.h"
+#include "formats/xacro/entry_points.h"
 #include "pipeline/gitignore.h"
 
 namespace assetlint {
@@ -41,6 +42,7 @@ struct Walk {
   PathExpansion& out;
   const SelectionFor& selection_for;
   std::vector<std::string> found;
+  std::vector<std::string> xacro;  // .xacro files: only the top-level ones are checked
 
   bool left_out(const fs::path& path, bool is_directory, const GitIgnore& gitignore) const {
     const std::string spelled_path = spelled(path, cwd);
@@ -66,7 +68,21 @@ struct Walk {
         // A .xml is an asset only when its root is <mujoco> (not launch files, not URDFs named .xml).
         if (extension_of(path.string()) != ".xml" || mjcf_text(path)) found.push_back(spelled(path, cwd));
         break;
+      case FileKind::Xacro: xacro.push_back(spelled(path, cwd)); break;
       case FileKind::Unsupported: break;
+    }
+  }
+
+  // The .xacro files to check: the configured entry points, else the top-level files.
+  void found_xacro(const std::vector<std::string>& entry_points) {
+    if (entry_points.empty()) {
+      for (auto& top : xacro::top_level_xacro_files(xacro)) found.push_back(std::move(top));
+      return;
+    }
+    for (const std::string& file : xacro) {
+      std::error_code ec;
+      const std::string absolute = fs::absolute(file, ec).lexically_normal().string();
+      if (std::find(entry_points.begin(), entry_points.end(), absolute) != entry_points.end()) found.push_back(file);
     }
   }
 
@@ -139,10 +155,11 @@ PathExpansion expand_paths(const std::vector<std::string>& paths, const Selectio
       out.files.push_back(path);
       continue;
     }
-    Walk walk{cwd, out, selection_for, {}};
+    Walk walk{cwd, out, selection_for, {}, {}};
     // The selection inside the directory: its own asset-lint.toml counts.
-    const bool gitignore = selection_for((fs::path(path) / "*").generic_string()).respect_gitignore.value;
-    walk.directory(path, gitignore ? GitIgnore::for_directory(path) : GitIgnore{});
+    const config::FileSelection& inside = selection_for((fs::path(path) / "*").generic_string());
+    walk.directory(path, inside.respect_gitignore.value ? GitIgnore::for_directory(path) : GitIgnore{});
+    walk.found_xacro(inside.xacro_entry_points);
     std::sort(walk.found.begin(), walk.found.end());
     if (walk.found.empty()) out.without_assets.push_back(path);
     out.files.insert(out.files.end(), walk.found.begin(), walk.found.end());

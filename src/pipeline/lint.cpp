@@ -17,6 +17,7 @@
 #include "formats/mjcf/mjcf_reader.h"
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
+#include "formats/xacro/xacro_reader.h"
 #include "physics/articulation.h"
 #include "pipeline/inherited_fixes.h"
 #include "pipeline/suppressions.h"
@@ -25,6 +26,13 @@
 
 namespace assetlint {
 namespace {
+
+xacro::XacroOptions xacro_options(const std::string& path, const Settings& settings) {
+  xacro::XacroOptions options;
+  options.root = config::checked_root(path, settings);
+  for (const auto& [name, value] : settings.xacro.args) options.arguments[name] = xacro::ArgumentValue{value.value, value.origin, {}};
+  return options;
+}
 
 ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const SourceFile> file,
                 const FileSystem& files, const Settings& settings) {
@@ -36,6 +44,7 @@ ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const So
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files,
                              usda::ComposeOptions{config::checked_root(path, settings), settings.allow_outside_root});
+    case FileKind::Xacro: return xacro::read_xacro(std::move(file), files, xacro_options(path, settings));
     default: break;
   }
   ReadResult unsupported;
@@ -60,8 +69,8 @@ std::optional<std::string> kind_of(const std::string& path, std::string_view tex
   if (kind == FileKind::Unsupported && extension_of(path) == ".xml")
     return std::string("not a robot model: the root element of this .xml file is neither <mujoco> nor <robot>");
   if (kind == FileKind::Unsupported)
-    return fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .usda, text .usd, .mjcf and MJCF .xml "
-                       "files)", extension_of(path));
+    return fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .xacro, .usda, text .usd, .mjcf and MJCF "
+                       ".xml files)", extension_of(path));
   return std::nullopt;
 }
 
@@ -93,6 +102,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     }
     withhold_fixes_on_shared_literals(result.asset, diagnostics);
   }
+  if (result.relocate) result.asset.sources = result.relocate(diagnostics);
   for (auto& d : diagnostics) {
     // `[rules.<id>] severity` sets every finding of the rule, whatever tier the rule chose.
     d.severity = settings.severity_for(d.rule, d.severity);
@@ -137,6 +147,12 @@ LoadedAsset load_asset(const std::string& path, const Settings& settings, const 
   FileKind kind;
   if (auto why = kind_of(path, *text, kind)) {
     loaded.error = std::move(*why);
+    return loaded;
+  }
+  if (kind == FileKind::Xacro) {
+    // The commands that read one model (tune, simulate, compare) show and write its file's
+    // lines; a xacro file's model is its expansion's.
+    loaded.error = fmt::format("'{}' is xacro source: expand it first (asset-lint expand {} -o robot.urdf)", path, path);
     return loaded;
   }
   loaded.read = read(path, kind, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);

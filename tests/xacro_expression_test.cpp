@@ -1,0 +1,150 @@
+// xacro's ${…} expression language: the Python subset, its printing, and the clear errors for
+// what is outside it.
+#include <catch2/catch.hpp>
+
+#include <map>
+
+#include "formats/xacro/expression.h"
+
+using namespace assetlint::xacro;
+
+namespace {
+
+class Scope : public ExpressionScope {
+ public:
+  std::map<std::string, Value, std::less<>> names;
+  std::optional<Value> lookup(std::string_view name) override {
+    auto it = names.find(name);
+    if (it == names.end()) return std::nullopt;
+    return it->second;
+  }
+  std::optional<Value> lookup_in(const NamespaceRef&, std::string_view) override { return std::nullopt; }
+  Value load_yaml(const std::string&) override { throw EvalError("no YAML here"); }
+  Value arg(const std::string& name) override { return Value("arg:" + name); }
+  std::string abs_filename(const std::string& f) override { return "/abs/" + f; }
+};
+
+std::string eval(const std::string& expression) {
+  Scope scope;
+  scope.names["a"] = Value(2);
+  scope.names["x"] = Value(0.5);
+  scope.names["s"] = Value("Hello");
+  scope.names["l"] = Value::list({Value(1), Value(2.5), Value("z")});
+  scope.names["d"] = Value::dict({{Value("k"), Value(7)}}, true);
+  return python_str(evaluate_expression(expression, scope));
+}
+
+std::string error_of(const std::string& expression) {
+  try {
+    eval(expression);
+  } catch (const EvalError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("xacro expressions: arithmetic as Python computes it", "[xacro]") {
+  CHECK(eval("1+2*3") == "7");
+  CHECK(eval("7/2") == "3.5");
+  CHECK(eval("7//2") == "3");
+  CHECK(eval("-7//2") == "-4");
+  CHECK(eval("-7%3") == "2");
+  CHECK(eval("7.5//2") == "3.0");
+  CHECK(eval("2**10") == "1024");
+  CHECK(eval("2**-1") == "0.5");
+  CHECK(eval("-2**2") == "-4");
+  CHECK(eval("a*x") == "1.0");
+  CHECK(eval("3*0.1") == "0.30000000000000004");
+  CHECK(eval("0.9 / 2 - 0.2") == "0.25");
+  CHECK(eval("1e-5") == "1e-05");
+  CHECK(eval("1e16") == "1e+16");
+  CHECK(eval("123456789.0*10") == "1234567890.0");
+  CHECK(eval("0.0001") == "0.0001");
+  CHECK(eval("pi/2") == "1.5707963267948966");
+  CHECK(eval("1. + sin(pi)xml") == "1.0");
+}
+
+TEST_CASE("xacro expressions: math functions and builtins", "[xacro]") {
+  CHECK(eval("radians(180)xml") == "3.141592653589793");
+  CHECK(eval("degrees(pi)xml") == "180.0");
+  CHECK(eval("math.cos(0)xml") == "1.0");
+  CHECK(eval("atan2(1, 1)xml") == "0.7853981633974483");
+  CHECK(eval("sqrt(16)xml") == "4.0");
+  CHECK(eval("pow(2, 3)xml") == "8.0");
+  CHECK(eval("fabs(-3)xml") == "3.0");
+  CHECK(eval("floor(2.7)xml") == "2");
+  CHECK(eval("ceil(2.1)xml") == "3");
+  CHECK(eval("log(exp(2))xml") == "2.0");
+  CHECK(eval("math.pi") == "3.141592653589793");
+  CHECK(eval("len(l)xml") == "3");
+  CHECK(eval("int('42') + float('0.5')xml") == "42.5");
+  CHECK(eval("str(1.0) + 'x'") == "1.0x");
+  CHECK(eval("bool(0)xml") == "False");
+  CHECK(eval("abs(-2)xml") == "2");
+  CHECK(eval("min(3, 1, 2)xml") == "1");
+  CHECK(eval("max([1, 5, 2])xml") == "5");
+  CHECK(eval("round(2.5)xml") == "2");
+  CHECK(eval("round(3.5)xml") == "4");
+  CHECK(eval("round(0.125, 2)xml") == "0.12");
+  CHECK(eval("True and None") == "None");
+  CHECK(eval("xacro.arg('foo')xml") == "arg:foo");
+}
+
+TEST_CASE("xacro expressions: logic, comparisons, conditionals, strings", "[xacro]") {
+  CHECK(eval("1 < a <= 2") == "True");
+  CHECK(eval("1 < a < 2") == "False");
+  CHECK(eval("a == 2.0") == "True");
+  CHECK(eval("not a") == "False");
+  CHECK(eval("0 or 'x'") == "x");
+  CHECK(eval("'yes' if a > 1 else 'no'") == "yes");
+  CHECK(eval("'ell' in s") == "True");
+  CHECK(eval("3 not in l") == "True");
+  CHECK(eval("s + ' ' + \"world\"") == "Hello world");
+  CHECK(eval("'ab' * 3") == "ababab");
+  CHECK(eval("s.lower()xml") == "hello");
+  CHECK(eval("'a' 'b'") == "ab");
+  CHECK(eval("u'x'") == "x");
+}
+
+TEST_CASE("xacro expressions: lists, tuples, dicts and indexing", "[xacro]") {
+  CHECK(eval("[0, 1+1, 2]") == "[0, 2, 2]");
+  CHECK(eval("(0,1+1,2)xml") == "(0, 2, 2)xml");
+  CHECK(eval("l[-1]") == "z");
+  CHECK(eval("l[0:2]") == "[1, 2.5]");
+  CHECK(eval("s[1]") == "e");
+  CHECK(eval("d['k'] + d.k") == "14");
+  CHECK(eval("dict(a=0, b=1+1)xml") == "{'a': 0, 'b': 2}");
+  CHECK(eval("dict(a=1)['a']") == "1");
+  CHECK(eval("[1, 'a']") == "[1, 'a']");
+}
+
+TEST_CASE("xacro expressions: what is outside the subset is named, never guessed", "[xacro]") {
+  CHECK(error_of("lambda x: x") == "unsupported in ${…}: lambda");
+  CHECK(error_of("[i for i in l]") == "unsupported in ${…}: list comprehension");
+  CHECK(error_of("f'{a}'") == "unsupported in ${…}: f-string");
+  CHECK(error_of("a | 1") == "unsupported in ${…}: bitwise operator '|'");
+  CHECK(error_of("__import__('os')xml").find("invalid name") != std::string::npos);
+  CHECK(error_of("open('x')xml") == "unsupported in ${…}: open()xml");
+  CHECK(error_of("undefined_name") == "NameError: name 'undefined_name' is not defined");
+  CHECK(error_of("1/0") == "ZeroDivisionError: division by zero");
+  CHECK(error_of("'a' + 1").find("TypeError") == 0);
+  CHECK(error_of("l[5]") == "IndexError: index out of range");
+  CHECK(error_of("1 +") == "invalid syntax: unexpected end of expression");
+  CHECK(error_of("2**2**2**2**2").find("beyond 64 bits") != std::string::npos);
+  CHECK(error_of("'a' * 10**9").find("MiB") != std::string::npos);
+  CHECK(error_of(std::string(500, '(') + "1" + std::string(500, ')')) == "expression nested too deeply");
+}
+
+TEST_CASE("python floats print as Python's repr", "[xacro]") {
+  CHECK(python_float(0.1) == "0.1");
+  CHECK(python_float(1.0) == "1.0");
+  CHECK(python_float(-0.0) == "-0.0");
+  CHECK(python_float(1e22) == "1e+22");
+  CHECK(python_float(1.5e-7) == "1.5e-07");
+  CHECK(python_float(123.456) == "123.456");
+  CHECK(python_float(1e15) == "1000000000000000.0");
+  CHECK(python_float(0.00012) == "0.00012");
+  CHECK(python_float(8.625e-08) == "8.625e-08");
+}
