@@ -63,33 +63,33 @@ TEST_CASE("xacro expressions: arithmetic as Python computes it", "[xacro]") {
   CHECK(eval("123456789.0*10") == "1234567890.0");
   CHECK(eval("0.0001") == "0.0001");
   CHECK(eval("pi/2") == "1.5707963267948966");
-  CHECK(eval("1. + sin(pi)xml") == "1.0");
+  CHECK(eval("1. + sin(pi)") == "1.0000000000000002");
 }
 
 TEST_CASE("xacro expressions: math functions and builtins", "[xacro]") {
-  CHECK(eval("radians(180)xml") == "3.141592653589793");
-  CHECK(eval("degrees(pi)xml") == "180.0");
-  CHECK(eval("math.cos(0)xml") == "1.0");
-  CHECK(eval("atan2(1, 1)xml") == "0.7853981633974483");
-  CHECK(eval("sqrt(16)xml") == "4.0");
-  CHECK(eval("pow(2, 3)xml") == "8.0");
-  CHECK(eval("fabs(-3)xml") == "3.0");
-  CHECK(eval("floor(2.7)xml") == "2");
-  CHECK(eval("ceil(2.1)xml") == "3");
-  CHECK(eval("log(exp(2))xml") == "2.0");
+  CHECK(eval("radians(180)") == "3.141592653589793");
+  CHECK(eval("degrees(pi)") == "180.0");
+  CHECK(eval("math.cos(0)") == "1.0");
+  CHECK(eval("atan2(1, 1)") == "0.7853981633974483");
+  CHECK(eval("sqrt(16)") == "4.0");
+  CHECK(eval("pow(2, 3)") == "8.0");
+  CHECK(eval("fabs(-3)") == "3.0");
+  CHECK(eval("floor(2.7)") == "2");
+  CHECK(eval("ceil(2.1)") == "3");
+  CHECK(eval("log(exp(2))") == "2.0");
   CHECK(eval("math.pi") == "3.141592653589793");
-  CHECK(eval("len(l)xml") == "3");
-  CHECK(eval("int('42') + float('0.5')xml") == "42.5");
+  CHECK(eval("len(l)") == "3");
+  CHECK(eval("int('42') + float('0.5')") == "42.5");
   CHECK(eval("str(1.0) + 'x'") == "1.0x");
-  CHECK(eval("bool(0)xml") == "False");
-  CHECK(eval("abs(-2)xml") == "2");
-  CHECK(eval("min(3, 1, 2)xml") == "1");
-  CHECK(eval("max([1, 5, 2])xml") == "5");
-  CHECK(eval("round(2.5)xml") == "2");
-  CHECK(eval("round(3.5)xml") == "4");
-  CHECK(eval("round(0.125, 2)xml") == "0.12");
+  CHECK(eval("bool(0)") == "False");
+  CHECK(eval("abs(-2)") == "2");
+  CHECK(eval("min(3, 1, 2)") == "1");
+  CHECK(eval("max([1, 5, 2])") == "5");
+  CHECK(eval("round(2.5)") == "2");
+  CHECK(eval("round(3.5)") == "4");
+  CHECK(eval("round(0.125, 2)") == "0.12");
   CHECK(eval("True and None") == "None");
-  CHECK(eval("xacro.arg('foo')xml") == "arg:foo");
+  CHECK(eval("xacro.arg('foo')") == "arg:foo");
 }
 
 TEST_CASE("xacro expressions: logic, comparisons, conditionals, strings", "[xacro]") {
@@ -103,19 +103,19 @@ TEST_CASE("xacro expressions: logic, comparisons, conditionals, strings", "[xacr
   CHECK(eval("3 not in l") == "True");
   CHECK(eval("s + ' ' + \"world\"") == "Hello world");
   CHECK(eval("'ab' * 3") == "ababab");
-  CHECK(eval("s.lower()xml") == "hello");
+  CHECK(eval("s.lower()") == "hello");
   CHECK(eval("'a' 'b'") == "ab");
   CHECK(eval("u'x'") == "x");
 }
 
 TEST_CASE("xacro expressions: lists, tuples, dicts and indexing", "[xacro]") {
   CHECK(eval("[0, 1+1, 2]") == "[0, 2, 2]");
-  CHECK(eval("(0,1+1,2)xml") == "(0, 2, 2)xml");
+  CHECK(eval("(0,1+1,2)") == "(0, 2, 2)");
   CHECK(eval("l[-1]") == "z");
   CHECK(eval("l[0:2]") == "[1, 2.5]");
   CHECK(eval("s[1]") == "e");
   CHECK(eval("d['k'] + d.k") == "14");
-  CHECK(eval("dict(a=0, b=1+1)xml") == "{'a': 0, 'b': 2}");
+  CHECK(eval("dict(a=0, b=1+1)") == "{'a': 0, 'b': 2}");
   CHECK(eval("dict(a=1)['a']") == "1");
   CHECK(eval("[1, 'a']") == "[1, 'a']");
 }
@@ -125,8 +125,8 @@ TEST_CASE("xacro expressions: what is outside the subset is named, never guessed
   CHECK(error_of("[i for i in l]") == "unsupported in ${…}: list comprehension");
   CHECK(error_of("f'{a}'") == "unsupported in ${…}: f-string");
   CHECK(error_of("a | 1") == "unsupported in ${…}: bitwise operator '|'");
-  CHECK(error_of("__import__('os')xml").find("invalid name") != std::string::npos);
-  CHECK(error_of("open('x')xml") == "unsupported in ${…}: open()xml");
+  CHECK(error_of("__import__('os')").find("invalid name") != std::string::npos);
+  CHECK(error_of("open('x')") == "unsupported in ${…}: open()");
   CHECK(error_of("undefined_name") == "NameError: name 'undefined_name' is not defined");
   CHECK(error_of("1/0") == "ZeroDivisionError: division by zero");
   CHECK(error_of("'a' + 1").find("TypeError") == 0);

@@ -820,11 +820,8 @@ class Expander {
     std::size_t base = 0;  // where `rest` starts in the attribute's value
     const auto span_at = [&](std::size_t offset, std::size_t length) {
       if (!params.verbatim) return params.value_span;
-      Span s = params.value_span;
-      s.offset += offset;
-      s.length = length;
-      s.column += static_cast<std::uint32_t>(offset);  // params sit on one line when verbatim ASCII
-      return s;
+      const SourceFile& file = *files_read_[params.value_span.file - options_.first_id];
+      return file.span(params.value_span.file, params.value_span.offset + offset, length);
     };
     while (!trim(rest).empty()) {
       std::smatch m;
@@ -1014,13 +1011,15 @@ class Expander {
       }
       if (file_stack_.size() > options_.max_include_depth)
         fail(v.node->span, fmt::format("includes nested deeper than {}", options_.max_include_depth));
+      // Read under the name the file is shown with: the fixer's in-memory edits are keyed by it.
+      const std::string name = shown(path);
       std::string error;
-      std::optional<std::string> text = files_.read(path, error);
+      std::optional<std::string> text = files_.read(name, error);
       if (!text) {
         if (optional) continue;
         fail(filename.value_span, fmt::format("cannot include '{}': {}", path, error));
       }
-      const SourceTree& tree = add_tree(std::make_shared<const SourceFile>(shown(path), std::move(*text)), v.node->span);
+      const SourceTree& tree = add_tree(std::make_shared<const SourceFile>(name, std::move(*text)), v.node->span);
       file_stack_.push_back({path, v.node->span});
       for (const XAttribute& a : tree.root.attributes) {
         if (!a.name.starts_with("xmlns:") || a.name == "xmlns:xacro" || out.attribute(a.name)) continue;

@@ -38,6 +38,10 @@ class Builder {
       attr.name = std::string(a.name);
       const std::string_view raw = file_.view().substr(a.value_offset, a.value_length);
       attr.value = xml::decode_attribute_value(raw);
+      // Attribute-value normalisation, as expat (xacro's parser) applies it: every line break
+      // and tab reads as a space.
+      for (char& c : attr.value)
+        if (c == '\n' || c == '\t') c = ' ';
       attr.verbatim = attr.value == raw;
       attr.value_span = file_.span(id_, a.value_offset, a.value_length);
       out.attributes.push_back(std::move(attr));
