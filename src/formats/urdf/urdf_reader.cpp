@@ -135,7 +135,7 @@ class UrdfReader {
         const std::string_view value = doc_.value(a);
         if (value.find("${") != std::string_view::npos || value.find("$(") != std::string_view::npos) {
           parse_error(xml::value_span(file_, kFile, a),
-                      fmt::format("unexpanded xacro expression '{}'; run `xacro` to produce a URDF first", value));
+                      fmt::format("unexpanded xacro expression '{}'; check the .xacro source instead (asset-lint expands it)", value));
           return true;
         }
       }
