@@ -83,6 +83,10 @@ class Relocator {
     return std::prev(it)->element;
   }
 
+  bool in_sources(const Span& span) const {
+    return span.file != kNoFile && span.file >= kFirstXacro && span.file - kFirstXacro < expansion_.files.size();
+  }
+
   std::string where(const Span& span) const {
     const FileId index = span.file - kFirstXacro;
     const std::string path =
@@ -92,7 +96,8 @@ class Relocator {
 
   Span moved(const Span& span) const {
     if (span.file != kExpanded) return span;
-    if (const Placement* a = attribute_at(span.offset, span.length)) return a->attribute->origin.span;
+    if (const Placement* a = attribute_at(span.offset, span.length); a && in_sources(a->attribute->origin.span))
+      return a->attribute->origin.span;
     return element_at(span.offset)->span;
   }
 
@@ -100,7 +105,7 @@ class Relocator {
     for (Note& n : d.notes) n.span = moved(n.span);
     if (d.span.file != kExpanded) return;
     CallChain chain;
-    if (attribute) {
+    if (attribute && in_sources(attribute->attribute->origin.span)) {
       const Origin& o = attribute->attribute->origin;
       d.span = o.span;
       chain = o.chain;
@@ -154,7 +159,7 @@ class Relocator {
     std::string why;
     for (const Edit& e : d.fix->edits) {
       const Placement* p = e.file == kExpanded ? attribute_at(e.offset, e.length) : nullptr;
-      if (!p) {
+      if (!p || !in_sources(p->attribute->origin.span)) {
         why = "the fix would add text the xacro source produces elsewhere";
         break;
       }
