@@ -37,7 +37,9 @@ class ArmatureExcessive final : public Rule {
       const double armature = joint.armature->value;
       const physics::EffectiveInertia lighter = physics::effective_inertia(model.articulation(), asset, joint);
       const Moved moved = what_it_moves(model, asset, settings, joint, lighter, armature);
-      if (!moved.known) continue;
+      // A stand-in mass (MuJoCo refuses a massless body on a joint; a model meant to carry a
+      // tool there puts 1e-9 kg): the armature is then the joint's only inertia, by design.
+      if (!moved.known || moved.value < kStandInLoad) continue;
       const double ratio = armature / moved.value;
       if (ratio <= factor) continue;
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
@@ -47,6 +49,9 @@ class ArmatureExcessive final : public Rule {
   }
 
  private:
+  // kg·m² (kg on a slide): less than a gram at a millimetre from the axis.
+  static constexpr double kStandInLoad = 1e-9;
+
   // What the armature is compared with.
   struct Moved {
     bool known = false;

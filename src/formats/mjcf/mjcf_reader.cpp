@@ -66,6 +66,9 @@ class Reader {
     // An actuator on a spatial tendon, a site or a body moves joints the model does not name
     // (a tendon-driven hand's finger joints): then no joint can be called passive.
     bool unnamed_transmission = false;
+    // A model without any actuator is a mechanism that another model actuates (dm_control's
+    // composer, MuJoCo's attach): none of its joints can be called passive either.
+    bool any_actuator = false;
     std::vector<DampRatio> damp_ratios;
     for (const XMLElement* el : sections) {
       const std::string_view tag = el->Name();
@@ -75,6 +78,7 @@ class Reader {
       } else if (tag == "actuator") {
         for (const XMLElement* c : sources_.children(el)) {
           read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset, damp_ratios);
+          any_actuator = any_actuator || default_kind(c->Name()) == "actuator";
           const char* tendon = c->Attribute("tendon");
           if ((tendon && !tendons.contains(tendon)) || c->Attribute("site") || c->Attribute("body") ||
               c->Attribute("cranksite"))
@@ -83,7 +87,7 @@ class Reader {
       }
     }
     // MJCF lists every actuator: a joint none of them reaches is moved only by its links.
-    if (!unnamed_transmission)
+    if (any_actuator && !unnamed_transmission)
       for (Joint& joint : result_.asset.joints)
         if (joint.actuation == Actuation::Unknown) joint.actuation = Actuation::Passive;
     // After the actuators: which side of a coupling is driven decides which one follows.
