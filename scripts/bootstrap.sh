@@ -9,6 +9,7 @@ packages=(
   liburdfdom-dev libtinyxml2-dev libeigen3-dev libfmt-dev libcli11-dev
   catch2 libtomlplusplus-dev nlohmann-json3-dev
   libmujoco-dev
+  liblz4-dev  # binary USD (crate) layers compress their sections with LZ4
   librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot
   libxml2-utils  # xmllint: the JUnit report is validated against tests/schemas/junit.xsd
 )

@@ -42,7 +42,8 @@ std::size_t code_points(std::string_view text) {
 void write_excerpt(std::ostream& out, const FileReport& report, const Diagnostic& d, const Painter& paint) {
   if (!d.span.valid() || d.span.file >= report.sources.size()) return;
   const SourceFile& source = report.source(d.span.file);
-  if (d.span.line > source.line_count()) return;
+  // A binary layer has no lines of its own to show (`asset-lint cat` prints it as text).
+  if (source.binary() || d.span.line > source.line_count()) return;
   const std::string_view text = source.view();
   const std::size_t begin = source.line_start(d.span.line);
   std::size_t end = text.find('\n', begin);
@@ -99,15 +100,14 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
       if (d.fix && d.fix->applicability == Applicability::Safe) marker = " (fixable)";
       else if (d.fix && d.fix->applicability == Applicability::Unsafe) marker = " (unsafe fix)";
       out << fmt::format("{} {} {} {}\n",
-                         paint(bold, fmt::format("{}:{}:{}:", one_line(path), d.span.line, d.span.column)),
+                         paint(bold, one_line(location_text(report, d.span, path)) + ":"),
                          paint(severity_style(d.severity), fmt::format("{}:", severity_name(d.severity))),
                          one_line(d.message), paint(fmt::emphasis::faint, fmt::format("[{}]{}", d.rule, marker)));
       if (options.show_source) write_excerpt(out, report, d, paint);
       for (const Note& note : d.notes) {
         if (note.span.valid())
           out << fmt::format("  {} {} {}\n",
-                             paint(bold, fmt::format("{}:{}:{}:", one_line(note_path(report, note)), note.span.line,
-                                                     note.span.column)),
+                             paint(bold, one_line(location_text(report, note.span, note_path(report, note))) + ":"),
                              paint(bold, "note:"), one_line(note.message));
         else
           out << fmt::format("  {} {}\n", paint(bold, "note:"), one_line(note.message));
