@@ -19,6 +19,7 @@
 #include "formats/usda/usd_reader.h"
 #include "formats/usdc/crate_usda.h"
 #include "physics/articulation.h"
+#include "pipeline/binary_layer_fixes.h"
 #include "pipeline/inherited_fixes.h"
 #include "pipeline/suppressions.h"
 #include "rules/reader_rules.h"
@@ -102,6 +103,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
       rule->check(result.asset, settings, reporter);
     }
     withhold_fixes_on_shared_literals(result.asset, diagnostics);
+    withhold_fixes_in_binary_layers(result.asset.sources, diagnostics);
   }
   for (auto& d : diagnostics) {
     // `[rules.<id>] severity` sets every finding of the rule, whatever tier the rule chose.

@@ -230,6 +230,9 @@ Literal ValueReader::literal(ValueRep rep, const std::string& what, int indent) 
 Literal ValueReader::scalar(ValueRep rep, const std::string& what, int indent) {
   const unsigned type = rep.type();
   if (const Element* e = element_of(type)) {
+    // An asset path value holds a token index (in arrays, string indexes).
+    if (e->num == Num::AssetIdx)
+      return {e->name, asset_literal(file_.token(static_cast<std::uint32_t>(rep.payload()), what.c_str()))};
     const std::size_t size = size_of(e->num);
     std::string bytes(size * static_cast<std::size_t>(e->components), '\0');
     const std::uint32_t low = static_cast<std::uint32_t>(rep.payload());
@@ -443,7 +446,6 @@ Literal ValueReader::vt_value(Cursor& c, const std::string& what, int indent) {
   if (offset < 0 || static_cast<std::uint64_t>(offset) > c.remaining() + 8) c.fail(fmt::format("value offset {} leaves the file", offset));
   c.seek(start + static_cast<std::uint64_t>(offset));
   const ValueRep rep{c.read<std::uint64_t>()};
-  Guard guard(*this, rep.data, what);
   if (is_list_op(rep)) throw UnsupportedValue{what};
   return literal(rep, what, indent);
 }
@@ -602,7 +604,6 @@ std::vector<std::pair<std::string, Literal>> ValueReader::time_samples(ValueRep 
   std::vector<std::pair<std::string, Literal>> out;
   for (std::size_t i = 0; i < n; ++i) {
     const ValueRep value{c.read<std::uint64_t>()};
-    Guard guard(*this, value.data, what);
     out.emplace_back(real(times[i]), literal(value, what, indent));
   }
   return out;
