@@ -148,7 +148,13 @@ void dump_prim(const usda::Prim& p, const std::string& path, const std::string& 
     dump_value(r.names, out);
     out += "\n";
   }
-  for (const auto& ref : p.property_order) {
+  // Property order is presentation only (OpenUSD's writer sorts them): compared by name.
+  std::vector<usda::PropertyRef> order = p.property_order;
+  const auto name_of = [&](const usda::PropertyRef& r) {
+    return r.is_relationship ? p.relationships[r.index].name : p.attributes[r.index].name;
+  };
+  std::sort(order.begin(), order.end(), [&](const auto& a, const auto& b) { return name_of(a) < name_of(b); });
+  for (const auto& ref : order) {
     if (ref.is_relationship) {
       const auto& r = p.relationships[ref.index];
       out += in + fmt::format("rel {} custom={} varying={}\n", r.name, r.custom, r.varying);

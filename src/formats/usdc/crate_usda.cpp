@@ -40,6 +40,36 @@ bool is_arc(std::string_view key) {
   return key == "references" || key == "payload" || key == "inherits" || key == "specializes";
 }
 
+// Names in the order OpenUSD's text writer lists properties: letters without regard to
+// case ('_' before them), digit runs by value, then byte order.
+bool dictionary_less(std::string_view a, std::string_view b) {
+  std::size_t i = 0, j = 0;
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  while (i < a.size() && j < b.size()) {
+    const auto l = static_cast<unsigned char>(a[i]), r = static_cast<unsigned char>(b[j]);
+    if (digit(a[i]) && digit(b[j])) {
+      std::size_t ie = i, je = j;
+      while (ie < a.size() && digit(a[ie])) ++ie;
+      while (je < b.size() && digit(b[je])) ++je;
+      std::string_view x = a.substr(i, ie - i), y = b.substr(j, je - j);
+      while (x.size() > 1 && x[0] == '0') x.remove_prefix(1);
+      while (y.size() > 1 && y[0] == '0') y.remove_prefix(1);
+      if (x.size() != y.size()) return x.size() < y.size();
+      if (x != y) return x < y;
+      i = ie;
+      j = je;
+      continue;
+    }
+    if (l < 0x80 && r < 0x80 && l >= 0x40 && r >= 0x40 && (l & ~0x20) != (r & ~0x20))
+      return ((l + 5) & 31) < ((r + 5) & 31);
+    if (l != r && !(l >= 0x40 && r >= 0x40 && (l & ~0x20) == (r & ~0x20))) return l < r;
+    ++i;
+    ++j;
+  }
+  if (a.size() - i != b.size() - j) return a.size() - i < b.size() - j;
+  return a < b;
+}
+
 std::string indentation(int indent) { return std::string(static_cast<std::size_t>(indent) * 4, ' '); }
 
 class Writer {
@@ -213,7 +243,9 @@ class Writer {
                 bracketed(items, indent) + "\n";
       }
     }
-    for (const std::string& name : names(fields, "properties", path)) property(path, name, indent);
+    std::vector<std::string> properties = names(fields, "properties", path);
+    std::stable_sort(properties.begin(), properties.end(), [](const std::string& a, const std::string& b) { return dictionary_less(a, b); });
+    for (const std::string& name : properties) property(path, name, indent);
     const std::string prefix = path.back() == '}' ? path : path + "/";
     for (const std::string& name : names(fields, "primChildren", path)) {
       prim(prefix + name, name, indent);
