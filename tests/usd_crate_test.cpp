@@ -55,6 +55,9 @@ std::vector<fs::path> crate_files() {
 struct Reference {
   nlohmann::json json;
   std::string skipped;
+  // `asset-lint cat` of each crate file, given to OpenUSD too: it must accept the text and
+  // read the same layer from it.
+  std::vector<std::string> cat_texts;
 };
 
 const Reference& reference() {
@@ -75,6 +78,14 @@ const Reference& reference() {
                           shell_quote((source_dir() / "tests" / "usd_reference" / "export_layers.mjs").string()) + " " +
                           shell_quote(package.string());
     for (const auto& f : crate_files()) command += " " + shell_quote(f.string());
+    for (const auto& f : crate_files()) {
+      auto result = usdc::crate_to_usda(read_file(f));
+      if (auto* e = std::get_if<usdc::CrateError>(&result)) FAIL(usdc::describe(*e, f.string()));
+      r.cat_texts.push_back(std::get<usdc::CrateText>(result).text);
+      const auto text = dir.path() / fmt::format("cat{}.usda", r.cat_texts.size());
+      assetlint::test::write_file(text, r.cat_texts.back());
+      command += " " + shell_quote(text.string());
+    }
     command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
     const int status = std::system(command.c_str());
     if (status != 0) FAIL("export_layers.mjs failed (status " << status << "): " << read_file(err));
@@ -235,11 +246,13 @@ std::vector<std::string> findings(const assetlint::FileReport& report) {
 
 TEST_CASE("a crate layer reads as OpenUSD writes it in USDA, with the same findings", "[openusd][usdc]") {
   if (skip_without_openusd()) return;
-  const auto& layers = reference().json["layers"];
-  REQUIRE(layers.size() == crate_files().size());
-  REQUIRE(layers.size() >= 3);
+  const auto& all = reference().json["layers"];
+  const std::size_t n = crate_files().size();
+  REQUIRE(all.size() == 2 * n);
+  REQUIRE(n >= 3);
   std::size_t same_layer = 0, same_findings = 0;
-  for (const auto& entry : layers) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& entry = all[i];
     const std::string path = entry["path"].get<std::string>();
     INFO(path);
     REQUIRE_FALSE(entry["usda"].is_null());
@@ -263,4 +276,22 @@ TEST_CASE("a crate layer reads as OpenUSD writes it in USDA, with the same findi
   }
   WARN(fmt::format("{} crate layers: {} read as OpenUSD writes them, {} with the same findings", layers.size(),
                    same_layer, same_findings));
+}
+
+TEST_CASE("asset-lint cat prints a crate layer as USDA that OpenUSD reads back to the same layer", "[openusd][usdc]") {
+  if (skip_without_openusd()) return;
+  const auto& all = reference().json["layers"];
+  const auto files = crate_files();
+  REQUIRE(all.size() == 2 * files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    INFO(files[i].string());
+    const auto& back = all[files.size() + i];
+    REQUIRE_FALSE(back["usda"].is_null());  // OpenUSD accepts the text
+    const std::string& text = reference().cat_texts[i];
+    // What OpenUSD reads from the text is what asset-lint reads from the crate file, and
+    // what asset-lint reads from the text it printed.
+    const std::string ours = dump_layer(parse("cat", text));
+    CHECK(first_difference(ours, dump_layer(parse("OpenUSD of cat", back["usda"].get<std::string>()))) == "");
+    CHECK(first_difference(ours, dump_layer(parse("OpenUSD of crate", all[i]["usda"].get<std::string>()))) == "");
+  }
 }
