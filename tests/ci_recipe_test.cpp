@@ -315,5 +315,5 @@ TEST_CASE("docs/ci.md: the git textconv recipe makes crate layers diff as USDA",
   INFO(out);
   CHECK(out.find("Binary files") == std::string::npos);
   CHECK(out.find("-    defaultPrim = \"robot\"") != std::string::npos);
-  CHECK(out.find("+        float drive:angular:physics:stiffness") != std::string::npos);
+  CHECK(out.find("+            float drive:angular:physics:stiffness = 4.8") != std::string::npos);
 }

@@ -274,7 +274,7 @@ TEST_CASE("a crate layer reads as OpenUSD writes it in USDA, with the same findi
     CHECK(findings(from_crate) == findings(from_text));
     if (findings(from_crate) == findings(from_text)) ++same_findings;
   }
-  WARN(fmt::format("{} crate layers: {} read as OpenUSD writes them, {} with the same findings", layers.size(),
+  WARN(fmt::format("{} crate layers: {} read as OpenUSD writes them, {} with the same findings", n,
                    same_layer, same_findings));
 }
 

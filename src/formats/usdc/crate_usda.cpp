@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <functional>
 #include <new>
+#include <stdexcept>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -370,7 +371,11 @@ std::variant<CrateText, CrateError> crate_to_usda(std::string_view bytes) {
     return Writer(file).run();
   } catch (const CrateError& e) {
     return e;
+  } catch (const UnsupportedValue& u) {
+    return CrateError{"values", fmt::format("{}: a value of a type that has no USDA form here", u.what)};
   } catch (const std::bad_alloc&) {
+    return CrateError{"values", "the file claims more data than fits in memory"};
+  } catch (const std::length_error&) {
     return CrateError{"values", "the file claims more data than fits in memory"};
   }
 }
