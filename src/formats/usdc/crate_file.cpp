@@ -271,12 +271,14 @@ void CrateFile::read_paths() {
   Cursor c = open("PATHS", "PATHS");
   const std::uint64_t total = c.read<std::uint64_t>();
   const std::uint64_t n = c.read<std::uint64_t>();
-  if (n > decompressed_bound(c.remaining()) * 4 || total > decompressed_bound(c.remaining()) * 4)
-    c.fail(fmt::format("{} paths claimed in {} bytes", std::max(n, total), c.remaining()));
-  paths_.resize(static_cast<std::size_t>(total));
+  if (n > decompressed_bound(c.remaining()) * 4)
+    c.fail(fmt::format("{} paths claimed in {} bytes", n, c.remaining()));
+  // Every path but the empty one is in the tree.
+  if (total > n + 1) c.fail(fmt::format("{} paths claimed, {} in the path tree", total, n));
   const auto indexes = read_compressed_u32(c, static_cast<std::size_t>(n));
   const auto elements = read_compressed_i32(c, static_cast<std::size_t>(n));
   const auto jumps = read_compressed_i32(c, static_cast<std::size_t>(n));
+  paths_.resize(static_cast<std::size_t>(total));
   if (n == 0) return;
   // The tree is written depth first: a jump says whether an entry has a child (the next
   // entry) and where its next sibling is. Walked with an explicit stack; every entry is
