@@ -31,6 +31,7 @@ bool seeds(const std::string& target, const fs::path& file) {
   const std::string name = file.filename().string();
   if (target == "urdf_fuzz") return file.extension() == ".urdf";
   if (target == "usda_fuzz") return file.extension() == ".usda";
+  if (target == "usdc_fuzz") return file.extension() == ".usd";
   if (target == "mjcf_fuzz") return file.extension() == ".xml";
   if (target == "config_fuzz") return name == "asset-lint.toml";
   if (target == "xacro_fuzz") return file.extension() == ".xacro";

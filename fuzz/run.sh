@@ -17,6 +17,7 @@ rm -rf "$seeds" && mkdir -p "$seeds"
 case "$target" in
   urdf_fuzz) find "$root/fixtures" -name '*.urdf' -exec cp {} "$seeds/" \; ;;
   usda_fuzz) find "$root/fixtures" -name '*.usda' -exec cp {} "$seeds/" \; ;;
+  usdc_fuzz) find "$root/fixtures" -name '*.usd' -exec cp {} "$seeds/" \; ;;
   mjcf_fuzz) grep -rlZ --include='*.xml' '<mujoco' "$root/fixtures" | xargs -0 -I{} cp {} "$seeds/" ;;
   xacro_fuzz) find "$root/fixtures" -name '*.xacro' -exec cp {} "$seeds/" \; ;;
   config_fuzz) i=0; for f in $(find "$root/fixtures" -name 'asset-lint.toml'); do cp "$f" "$seeds/$i.toml"; i=$((i+1)); done ;;

@@ -11,6 +11,7 @@ packages=(
   libyaml-cpp-dev  # xacro.load_yaml in .xacro files
   libmujoco-dev
   libassimp-dev  # Collada collision meshes for `asset-lint verify`
+  liblz4-dev  # binary USD (crate) layers compress their sections with LZ4
   librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot
   libxml2-utils  # xmllint: the JUnit report is validated against tests/schemas/junit.xsd
 )

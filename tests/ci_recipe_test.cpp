@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -289,4 +290,30 @@ TEST_CASE("docs/ci.md: the recipes install packages the Debian archive has", "[c
         0);
   INFO("packages:" + names);
   CHECK(std::stoul(out) == packages.size());
+}
+
+TEST_CASE("docs/ci.md: the git textconv recipe makes crate layers diff as USDA", "[ci-recipe][usdc]") {
+  if (!on_path("git")) {
+    WARN("git not installed; skipping the CI recipe test");
+    return;
+  }
+  const auto blocks = fenced_blocks(read_file(assetlint::test::source_dir() / "docs" / "ci.md"));
+  const auto recipe = std::find_if(blocks.begin(), blocks.end(), [](const Block& b) {
+    return b.language == "sh" && std::any_of(b.lines.begin(), b.lines.end(), [](const std::string& l) {
+             return l.find("diff.usd.textconv") != std::string::npos;
+           });
+  });
+  REQUIRE(recipe != blocks.end());
+  AssetRepository repo;
+  const auto crate = [](const char* name) { return read_file(assetlint::test::fixtures_dir() / "usdc" / name); };
+  write_file(repo.root() / "assets" / "robot.usd", crate("value_types.usd"));
+  REQUIRE(repo.run(kGit + "add . && " + kGit + "commit -q -m crate") == 0);
+  for (const std::string& line : recipe->lines) REQUIRE(repo.run(line) == 0);
+  write_file(repo.root() / "assets" / "robot.usd", crate("robotiq_2f85.usd"));
+  REQUIRE(repo.run(kGit + "diff -- assets/robot.usd") == 0);
+  const std::string& out = repo.output;
+  INFO(out);
+  CHECK(out.find("Binary files") == std::string::npos);
+  CHECK(out.find("-    defaultPrim = \"robot\"") != std::string::npos);
+  CHECK(out.find("+            float drive:angular:physics:stiffness = 4.8") != std::string::npos);
 }

@@ -23,7 +23,7 @@ void make_tree(const std::filesystem::path& root) {
   write_file(root / "sub" / "b.urdf", kCleanUrdf);
   std::filesystem::create_symlink("loop", root / "loop");
   write_file(root / "text.usd", "#usda 1.0\n");
-  write_file(root / "crate.usd", std::string("PXR-USDC\0\0\0\0", 12));
+  write_file(root / "package.usdz", std::string("PK\3\4", 4));
   write_file(root / "more.usdc", "x");
 }
 
@@ -35,10 +35,11 @@ TEST_CASE("io: an unreadable entry is an error naming it, the rest is still chec
   auto r = run_cli({"."}, dir.path());
   CHECK(r.exit_code == 2);
   CHECK(r.err == "asset-lint: error: cannot read entry 'loop': Too many levels of symbolic links\n");
-  // a.urdf, sub/b.urdf and the text .usd are checked; the two binary USD files are counted.
+  // a.urdf, sub/b.urdf and the text .usd are checked; the package and the .usdc that is no
+  // crate layer are counted.
   CHECK(r.out ==
         "1 path could not be read (errors above); no problems found in 3 files. Skipped 2 binary USD files "
-        "(asset-lint reads text USD).\n");
+        "(.usdz packages and files that are neither USDA nor crate layers).\n");
 }
 
 TEST_CASE("io: a missing file is exit 2 and the summary does not call the run clean", "[io]") {
@@ -59,12 +60,22 @@ TEST_CASE("io: a directory without asset files is named", "[io]") {
   CHECK(r.err == "asset-lint: warning: no asset files found under 'empty'\n");
 }
 
-TEST_CASE("io: a binary .usd named explicitly is an error, a text one is read", "[io]") {
+TEST_CASE("io: a crate .usd is read, a broken one and a .usdz named explicitly are errors", "[io]") {
   TempDir dir;
   make_tree(dir.path());
-  auto binary = run_cli({"crate.usd"}, dir.path());
-  CHECK(binary.exit_code == 2);
-  CHECK(binary.err.find("'crate.usd' is a binary USD file") != std::string::npos);
+  write_file(dir.path() / "broken.usd", std::string("PXR-USDC\0\0\0\0", 12));
+  auto broken = run_cli({"broken.usd"}, dir.path());
+  CHECK(broken.exit_code == 2);
+  CHECK(broken.err ==
+        "asset-lint: error: cannot read the binary USD layer 'broken.usd': bootstrap: the file has 12 bytes, fewer "
+        "than the 88-byte crate header\n");
+  auto package = run_cli({"package.usdz"}, dir.path());
+  CHECK(package.exit_code == 2);
+  CHECK(package.err.find("'package.usdz' is a binary USD file that is not a crate layer") != std::string::npos);
+  std::filesystem::copy_file(assetlint::test::fixtures_dir() / "usdc" / "value_types.usd", dir.path() / "crate.usd");
+  auto crate = run_cli({"crate.usd"}, dir.path());
+  CHECK(crate.exit_code != 2);
+  CHECK(crate.err == "");
   auto text = run_cli({"text.usd"}, dir.path());
   CHECK(text.exit_code == 0);
   CHECK(text.out == "No problems found in 1 file.\n");

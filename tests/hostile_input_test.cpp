@@ -5,9 +5,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <lz4.h>
+
+#include <cstring>
 #include <filesystem>
+#include <variant>
 
 #include "engine/file_system.h"
+#include "formats/usdc/crate_usda.h"
 #include "pipeline/lint.h"
 #include "test_support.h"
 
@@ -198,4 +203,109 @@ TEST_CASE("hostile: xacro recursion, include cycles and exponential expansion en
                std::to_string(i - 1) + "}\"/>";
   const FileReport doubled = lint("strings.xacro", strings + "<link name=\"${p40}\"/>");
   CHECK(message(doubled).find("MiB an expression may build") != std::string::npos);
+namespace {
+
+std::string crate_fixture() { return test::read_file(test::fixtures_dir() / "usdc" / "value_types.usd"); }
+
+template <class T>
+void poke(std::string& bytes, std::size_t at, T value) {
+  REQUIRE(at + sizeof value <= bytes.size());
+  std::memcpy(bytes.data() + at, &value, sizeof value);
+}
+
+template <class T>
+T peek(const std::string& bytes, std::size_t at) {
+  T value;
+  std::memcpy(&value, bytes.data() + at, sizeof value);
+  return value;
+}
+
+// Where the table of contents puts a section.
+std::size_t section_start(const std::string& bytes, std::string_view name) {
+  const auto toc = static_cast<std::size_t>(peek<std::int64_t>(bytes, 16));
+  const auto n = peek<std::uint64_t>(bytes, toc);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t entry = toc + 8 + i * 32;
+    if (std::string_view(bytes.data() + entry) == name) return static_cast<std::size_t>(peek<std::int64_t>(bytes, entry + 16));
+  }
+  FAIL("no section " << name);
+  return 0;
+}
+
+usdc::CrateError crate_error(const std::string& bytes) {
+  auto result = usdc::crate_to_usda(bytes);
+  REQUIRE(std::holds_alternative<usdc::CrateError>(result));
+  return std::get<usdc::CrateError>(result);
+}
+
+}  // namespace
+
+TEST_CASE("hostile: a broken crate layer is an error naming its section, never a crash", "[hostile][usdc]") {
+  const std::string good = crate_fixture();
+  REQUIRE(std::holds_alternative<usdc::CrateText>(usdc::crate_to_usda(good)));
+
+  SECTION("truncated: the table of contents is cut off") {
+    const auto e = crate_error(good.substr(0, good.size() - 40));
+    CHECK(e.section == "table of contents");
+    const auto tiny = crate_error(good.substr(0, 20));
+    CHECK(tiny.section == "bootstrap");
+    CHECK_THAT(tiny.message, Catch::Contains("fewer than the 88-byte crate header"));
+  }
+  SECTION("the table of contents past the end of the file") {
+    std::string bytes = good;
+    poke<std::int64_t>(bytes, 16, static_cast<std::int64_t>(good.size()) + 1000);
+    const auto e = crate_error(bytes);
+    CHECK(e.section == "bootstrap");
+    CHECK_THAT(e.message, Catch::Contains("outside the file"));
+  }
+  SECTION("a section that claims bytes past the end") {
+    std::string bytes = good;
+    const auto toc = static_cast<std::size_t>(peek<std::int64_t>(bytes, 16));
+    poke<std::int64_t>(bytes, toc + 8 + 24, std::int64_t{1} << 40);  // the first section's size
+    CHECK_THAT(crate_error(bytes).message, Catch::Contains("lies outside the file"));
+  }
+  SECTION("huge counts are refused before anything is allocated") {
+    for (const char* section : {"TOKENS", "STRINGS", "FIELDS", "FIELDSETS", "PATHS", "SPECS"}) {
+      INFO(section);
+      std::string bytes = good;
+      poke<std::uint64_t>(bytes, section_start(bytes, section), std::uint64_t{1} << 62);
+      CHECK(crate_error(bytes).section == section);
+    }
+  }
+  SECTION("an LZ4 bomb: a claimed size beyond what the compressed bytes can give, or output past the buffer") {
+    std::string bytes = good;
+    poke<std::uint64_t>(bytes, section_start(bytes, "TOKENS") + 8, std::uint64_t{1} << 50);
+    CHECK_THAT(crate_error(bytes).message, Catch::Contains("bytes of tokens claimed"));
+
+    // 16 MB of zeros compress to a few kB; decompressing into a 1 kB buffer stops at its end.
+    const std::string zeros(16 << 20, '\0');
+    std::string packed(static_cast<std::size_t>(LZ4_compressBound(static_cast<int>(zeros.size()))) + 1, '\0');
+    const int n = LZ4_compress_default(zeros.data(), packed.data() + 1, static_cast<int>(zeros.size()),
+                                       static_cast<int>(packed.size() - 1));
+    REQUIRE(n > 0);
+    packed.resize(static_cast<std::size_t>(n) + 1);
+    std::string out(1024, 'x');
+    const usdc::Cursor where(packed, "test");
+    CHECK_THROWS_AS(usdc::decompress(packed, out.data(), out.size(), where), usdc::CrateError);
+  }
+  SECTION("versions outside 0.4.0 to 0.11 are refused by name") {
+    std::string bytes = good;
+    bytes[9] = 3;  // 0.3.0
+    CHECK_THAT(crate_error(bytes).message, Catch::Contains("crate version 0.3.0 is not supported"));
+    bytes[8] = 1;  // 1.3.0
+    CHECK_THAT(crate_error(bytes).message, Catch::Contains("crate version 1.3.0 is not supported"));
+    const auto report = lint_text("robot.usd", bytes, Settings{});
+    REQUIRE(report.error);
+    CHECK_THAT(*report.error, Catch::Contains("cannot read the binary USD layer 'robot.usd': bootstrap: crate version 1.3.0"));
+  }
+  SECTION("every byte flipped in turn: text or an error, never a crash") {
+    std::size_t errors = 0;
+    for (std::size_t i = 0; i < good.size(); ++i) {
+      std::string bytes = good;
+      bytes[i] = static_cast<char>(~bytes[i]);
+      const auto result = usdc::crate_to_usda(bytes);
+      if (std::holds_alternative<usdc::CrateError>(result)) ++errors;
+    }
+    CHECK(errors > good.size() / 10);
+  }
 }

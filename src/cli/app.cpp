@@ -12,6 +12,7 @@
 #include "cli/report_writer.h"
 #include "cli/rule_pages.h"
 #include "commands/add_suppressions.h"
+#include "commands/cat.h"
 #include "commands/check.h"
 #include "commands/compare_command.h"
 #include "commands/exit_status.h"
@@ -167,6 +168,7 @@ int run(const std::vector<std::string>& args, std::istream& in, std::ostream& ou
   if (!args.empty() && args.front() == "rule") return run_rule_command(args, out, err);
   if (!args.empty() && args.front() == "compare")
     return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
+  if (!args.empty() && args.front() == "cat") return commands::run_cat({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "verify") return commands::run_verify({args.begin() + 1, args.end()}, out, err);
   if (!args.empty() && args.front() == "expand") return commands::run_expand({args.begin() + 1, args.end()}, out, err);

@@ -88,7 +88,7 @@ void add_options(CLI::App& app, Options& o) {
                  "Print the settings a check of FILE would use, each with where it came from, and exit");
   app.add_flag("--version", o.version, "Print the version and exit");
   app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint expand FILE.xacro print the URDF a .xacro file expands to\n  asset-lint rule RULE-ID      print a rule's documentation (rule --all: every rule)\n\n"
+      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint expand FILE.xacro print the URDF a .xacro file expands to\n  asset-lint rule RULE-ID      print a rule's documentation (rule --all: every rule)\n  asset-lint cat FILE.usd      print a binary (crate) USD layer as USDA\n\n"
       "Exit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
       "remain, 2 usage, configuration or I/O error.\n"
       "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");

@@ -19,7 +19,9 @@ namespace {
 
 std::string origin_of(const Asset& asset, const Span& span) {
   if (!span.valid()) return "the asset (default)";
-  return fmt::format("{}:{}", asset.source(span.file).path(), span.line);
+  const SourceFile& source = asset.source(span.file);
+  if (source.binary()) return fmt::format("{} <{}>", source.path(), source.object_at(span.offset));
+  return fmt::format("{}:{}", source.path(), span.line);
 }
 
 std::string step_origin(std::size_t index) { return fmt::format("step {}", index + 1); }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 
 namespace assetlint {
 namespace {
@@ -45,6 +46,19 @@ SourceFile::SourceFile(std::string path, std::string text)
       line_starts_.push_back(i + 1);
     }
   }
+}
+
+SourceFile::SourceFile(std::string path, std::string text, std::vector<ObjectLocation> objects)
+    : SourceFile(std::move(path), std::move(text)) {
+  binary_ = true;
+  objects_ = std::move(objects);
+}
+
+std::string_view SourceFile::object_at(std::size_t offset) const {
+  auto it = std::upper_bound(objects_.begin(), objects_.end(), offset,
+                             [](std::size_t o, const ObjectLocation& l) { return o < l.offset; });
+  if (it == objects_.begin()) return {};
+  return std::prev(it)->path;
 }
 
 LineColumn SourceFile::position(std::size_t offset) const {

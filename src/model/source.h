@@ -29,10 +29,24 @@ struct LineColumn {
   std::uint32_t column = 1;
 };
 
+// Where an object of a binary layer starts in the text it is shown as: a prim or property
+// path ("/robot/LF_HAA.drive:angular:physics:stiffness"), "" for the layer itself.
+struct ObjectLocation {
+  std::size_t offset = 0;
+  std::string path;
+};
+
 // The text of a file as read from disk, with a line index built once.
 class SourceFile {
  public:
   SourceFile(std::string path, std::string text);
+  // A binary layer (USD crate), held as the USDA text it reads as. Its lines are not the
+  // file's: locations in it name the object at an offset instead (object_at).
+  SourceFile(std::string path, std::string text, std::vector<ObjectLocation> objects);
+
+  bool binary() const { return binary_; }
+  // The object whose text holds `offset` ("" for layer metadata, or in a text file).
+  std::string_view object_at(std::size_t offset) const;
 
   const std::string& path() const { return path_; }
   const std::string& text() const { return text_; }
@@ -52,6 +66,8 @@ class SourceFile {
   std::vector<std::size_t> line_starts_;
   bool ascii_ = true;  // no byte >= 0x80: a column is a byte count
   std::size_t bom_length_ = 0;
+  bool binary_ = false;
+  std::vector<ObjectLocation> objects_;  // by offset
 };
 
 }  // namespace assetlint

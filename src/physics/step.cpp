@@ -53,7 +53,12 @@ std::string SimulationRate::describe() const {
 SimulationRate effective_simulation(const Asset& asset, const Settings& settings) {
   SimulationRate rate;
   const auto where = [&](const Span& span) {
-    if (span.valid()) return fmt::format("{}:{}", asset.source(span.file).path(), span.line);
+    if (span.valid()) {
+      const SourceFile& source = asset.source(span.file);
+      // A binary (crate) layer has no lines: the object instead.
+      if (source.binary()) return fmt::format("{} <{}>", source.path(), source.object_at(span.offset));
+      return fmt::format("{}:{}", source.path(), span.line);
+    }
     return std::string(asset.format == SourceFormat::Mjcf ? "MuJoCo's default timestep" : "stage default");
   };
   // The stage's own value wins, then configuration; the defaults stay otherwise.

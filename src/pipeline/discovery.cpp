@@ -9,6 +9,7 @@
 #include "engine/file_system.h"
 #include "formats/file_kind.h"
 #include "formats/xacro/entry_points.h"
+#include "formats/usdc/crate_file.h"
 #include "pipeline/gitignore.h"
 
 namespace assetlint {
@@ -60,10 +61,13 @@ struct Walk {
       case FileKind::Urdf:
       case FileKind::Usda: found.push_back(spelled(path, cwd)); break;
       case FileKind::Usd:
-        if (usd_kind(head_of(path)) == FileKind::Usda) found.push_back(spelled(path, cwd));
+      case FileKind::BinaryUsd: {
+        // Text and crate layers are read; other binary USD (.usdz packages) is counted as skipped.
+        const std::string head = head_of(path);
+        if (usd_kind(head) == FileKind::Usda || usdc::is_crate(head)) found.push_back(spelled(path, cwd));
         else out.binary_usd.push_back(spelled(path, cwd));
         break;
-      case FileKind::BinaryUsd: out.binary_usd.push_back(spelled(path, cwd)); break;
+      }
       case FileKind::Mjcf:
         // A .xml is an asset only when its root is <mujoco> (not launch files, not URDFs named .xml).
         if (extension_of(path.string()) != ".xml" || mjcf_text(path)) found.push_back(spelled(path, cwd));

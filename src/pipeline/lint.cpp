@@ -18,7 +18,9 @@
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "formats/xacro/xacro_reader.h"
+#include "formats/usdc/crate_usda.h"
 #include "physics/articulation.h"
+#include "pipeline/binary_layer_fixes.h"
 #include "pipeline/inherited_fixes.h"
 #include "pipeline/suppressions.h"
 #include "rules/reader_rules.h"
@@ -63,15 +65,22 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 std::optional<std::string> kind_of(const std::string& path, std::string_view text, FileKind& kind) {
   kind = file_kind(path, text);
   if (kind == FileKind::Usd) kind = usd_kind(text);
+  if (kind == FileKind::BinaryUsd && usdc::is_crate(text)) kind = FileKind::Usda;
   if (kind == FileKind::BinaryUsd)
-    return fmt::format("'{}' is a binary USD file; asset-lint reads text USD (.usda, or .usd starting with '#usda "
-                       "1.0')", path);
+    return fmt::format("'{}' is a binary USD file that is not a crate layer (a .usdz package?); asset-lint reads "
+                       "USDA and crate layers (.usda, .usd, .usdc)", path);
   if (kind == FileKind::Unsupported && extension_of(path) == ".xml")
     return std::string("not a robot model: the root element of this .xml file is neither <mujoco> nor <robot>");
   if (kind == FileKind::Unsupported)
     return fmt::format("unsupported file type '{}' (asset-lint reads .urdf, .xacro, .usda, text .usd, .mjcf and MJCF "
                        ".xml files)", extension_of(path));
   return std::nullopt;
+}
+
+// The source the reader reads: the file's text, or the USDA a crate layer reads as.
+std::shared_ptr<const SourceFile> source_of(const std::string& path, std::string text, std::string& error) {
+  if (usdc::is_crate(text)) return usdc::crate_source(path, text, error);
+  return std::make_shared<const SourceFile>(path, std::move(text));
 }
 
 }  // namespace
@@ -84,7 +93,9 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     report.error = std::move(*why);
     return report;
   }
-  auto file = std::make_shared<const SourceFile>(path, std::move(text));
+  auto file = source_of(path, std::move(text), report.error.emplace());
+  if (!file) return report;
+  report.error.reset();
   ReadResult result = read(path, kind, std::move(file), files, settings);
   std::vector<Diagnostic> diagnostics;
   std::set<FileId> unparsable;
@@ -101,6 +112,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
       rule->check(result.asset, settings, reporter);
     }
     withhold_fixes_on_shared_literals(result.asset, diagnostics);
+    withhold_fixes_in_binary_layers(result.asset.sources, diagnostics);
   }
   if (result.relocate) result.asset.sources = result.relocate(diagnostics);
   for (auto& d : diagnostics) {
@@ -155,7 +167,12 @@ LoadedAsset load_asset(const std::string& path, const Settings& settings, const 
     loaded.error = fmt::format("'{}' is xacro source: expand it first (asset-lint expand {} -o robot.urdf)", path, path);
     return loaded;
   }
-  loaded.read = read(path, kind, std::make_shared<const SourceFile>(path, std::move(*text)), files, settings);
+  auto file = source_of(path, std::move(*text), error);
+  if (!file) {
+    loaded.error = std::move(error);
+    return loaded;
+  }
+  loaded.read = read(path, kind, std::move(file), files, settings);
   if (loaded.read.usable) config::apply_drive_settings(loaded.read.asset, settings);
   return loaded;
 }

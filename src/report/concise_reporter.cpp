@@ -9,7 +9,7 @@ namespace assetlint {
 void write_concise(std::ostream& out, const std::vector<FileReport>& reports) {
   for (const auto& report : reports)
     for (const auto& d : report.diagnostics)
-      out << fmt::format("{}:{}:{}: {} {}\n", one_line(diagnostic_path(report, d)), d.span.line, d.span.column, d.rule,
+      out << fmt::format("{}: {} {}\n", one_line(location_text(report, d.span, diagnostic_path(report, d))), d.rule,
                          one_line(d.message));
 }
 

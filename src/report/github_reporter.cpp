@@ -48,6 +48,13 @@ void write_github(std::ostream& out, const std::vector<FileReport>& reports, con
     for (const auto& d : report.diagnostics) {
       const char* command = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "notice";
       const LineColumn end = end_position(report, d.span);
+      if (auto object = object_path(report, d.span)) {
+        // A binary layer has no lines: line 1, with the object the finding is about in the message.
+        out << fmt::format("::{} file={},line=1,title={}::{}\n", command, github_escape_property(diagnostic_path(report, d)),
+                           github_escape_property(fmt::format("asset-lint ({})", d.rule)),
+                           github_escape_data("<" + *object + "> " + with_notes(report, d)));
+        continue;
+      }
       out << fmt::format("::{} file={},line={},col={},endLine={},endColumn={},title={}::{}\n", command,
                          github_escape_property(diagnostic_path(report, d)), d.span.line, d.span.column, end.line,
                          end.column, github_escape_property(fmt::format("asset-lint ({})", d.rule)),

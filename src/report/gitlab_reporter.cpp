@@ -48,11 +48,13 @@ void write_gitlab(std::ostream& out, const std::vector<FileReport>& reports) {
       const std::size_t occurrence = seen[{d.rule, path, d.message}]++;
       ordered_json issue;
       issue["type"] = "issue";
-      issue["description"] = d.message;
+      const auto object = object_path(report, d.span);
+      // A binary layer has no lines: line 1, with the object the finding is about in the description.
+      issue["description"] = object ? "<" + *object + "> " + d.message : d.message;
       issue["check_name"] = d.rule;
       issue["fingerprint"] = gitlab_fingerprint(d.rule, path, d.message, occurrence);
       issue["severity"] = gitlab_severity(d.severity);
-      issue["location"] = {{"path", path}, {"lines", {{"begin", d.span.line}}}};
+      issue["location"] = {{"path", path}, {"lines", {{"begin", object ? 1u : d.span.line}}}};
       issues.push_back(std::move(issue));
     }
   }

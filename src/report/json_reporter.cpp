@@ -15,10 +15,15 @@ void write_json(std::ostream& out, const std::vector<FileReport>& reports, const
       const LineColumn end = end_position(report, d.span);
       ordered_json item;
       item["file"] = d.span.file < report.sources.size() ? report.source(d.span.file).path() : report.path;
-      item["line"] = d.span.line;
-      item["column"] = d.span.column;
-      item["end_line"] = end.line;
-      item["end_column"] = end.column;
+      if (auto object = object_path(report, d.span)) {
+        // A binary layer has no lines: the object the finding is about instead.
+        item["object_path"] = *object;
+      } else {
+        item["line"] = d.span.line;
+        item["column"] = d.span.column;
+        item["end_line"] = end.line;
+        item["end_column"] = end.column;
+      }
       item["rule"] = d.rule;
       item["severity"] = severity_name(d.severity);
       item["message"] = d.message;
@@ -28,8 +33,12 @@ void write_json(std::ostream& out, const std::vector<FileReport>& reports, const
         ordered_json entry{{"message", note.message}};
         if (note.span.valid()) {
           entry["file"] = note_path(report, note);
-          entry["line"] = note.span.line;
-          entry["column"] = note.span.column;
+          if (auto object = object_path(report, note.span)) {
+            entry["object_path"] = *object;
+          } else {
+            entry["line"] = note.span.line;
+            entry["column"] = note.span.column;
+          }
         }
         notes.push_back(std::move(entry));
       }

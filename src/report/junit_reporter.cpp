@@ -122,11 +122,15 @@ void write_junit(std::ostream& out, const std::vector<FileReport>& reports, cons
                        suite.passed.size() + report.diagnostics.size(), report.diagnostics.size());
     for (const Diagnostic& d : report.diagnostics) {
       const std::string& where = diagnostic_path(report, d);
-      const std::string location = fmt::format("{}:{}:{}", where, d.span.line, d.span.column);
+      const std::string location = location_text(report, d.span, where);
+      // A binary layer has no lines: line 1, with the object path in the name and the location.
+      const auto object = object_path(report, d.span);
+      const std::string place = object ? "<" + *object + ">" : fmt::format("{}:{}", d.span.line, d.span.column);
+      const std::uint32_t line = object ? 1 : d.span.line;
       const std::string notes = notes_text(report, d);
       const std::string body = notes.empty() ? d.message : d.message + "\n" + notes;
-      out << fmt::format("    <testcase classname=\"{}\" name=\"{} ({}:{})\" file=\"{}\" line=\"{}\">\n", path,
-                         xml_escape(d.rule), d.span.line, d.span.column, xml_escape(where), d.span.line);
+      out << fmt::format("    <testcase classname=\"{}\" name=\"{} ({})\" file=\"{}\" line=\"{}\">\n", path,
+                         xml_escape(d.rule), xml_escape(place), xml_escape(where), line);
       out << fmt::format("      <failure message=\"{}\" type=\"{}\">{}: {}</failure>\n", xml_escape(d.message),
                          severity_name(d.severity), xml_escape(location), xml_escape(body));
       out << "    </testcase>\n";

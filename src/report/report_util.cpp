@@ -18,6 +18,17 @@ std::string one_line(std::string_view text) {
   return out;
 }
 
+std::optional<std::string> object_path(const FileReport& report, const Span& span) {
+  if (span.file >= report.sources.size() || !report.source(span.file).binary()) return std::nullopt;
+  const std::string_view object = report.source(span.file).object_at(span.offset);
+  return object.empty() ? "/" : std::string(object);
+}
+
+std::string location_text(const FileReport& report, const Span& span, const std::string& path) {
+  if (auto object = object_path(report, span)) return fmt::format("{} <{}>", path, *object);
+  return fmt::format("{}:{}:{}", path, span.line, span.column);
+}
+
 std::string help_line(const Fix& fix) {
   switch (fix.applicability) {
     case Applicability::Safe: return "fix: " + fix.title;
@@ -32,7 +43,7 @@ std::string notes_text(const FileReport& report, const Diagnostic& d) {
   for (const Note& note : d.notes) {
     if (!out.empty()) out += '\n';
     if (note.span.valid())
-      out += fmt::format("{}:{}:{}: note: {}", note_path(report, note), note.span.line, note.span.column, note.message);
+      out += fmt::format("{}: note: {}", location_text(report, note.span, note_path(report, note)), note.message);
     else
       out += "note: " + note.message;
   }

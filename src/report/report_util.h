@@ -1,5 +1,6 @@
 #pragma once
 // Small helpers the report writers share.
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,6 +17,13 @@ inline const std::string& diagnostic_path(const FileReport& report, const Diagno
 inline const std::string& note_path(const FileReport& report, const Note& note) {
   return note.span.file < report.sources.size() ? report.source(note.span.file).path() : report.path;
 }
+
+// The object path a span points at in a binary (crate) layer, which has no lines
+// ("/anymal/LF_HAA.drive:angular:physics:stiffness"); nullopt in a text file.
+std::optional<std::string> object_path(const FileReport& report, const Span& span);
+
+// Where a span is, for a reader: "path:line:column", or "path </object/path>" in a binary layer.
+std::string location_text(const FileReport& report, const Span& span, const std::string& path);
 
 // "fix: set stiffness …", "unsafe fix: …" or "suggestion: …": what the fix writes and
 // how far it is trusted.

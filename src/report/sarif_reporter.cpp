@@ -150,17 +150,21 @@ void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, cons
         result["message"] = {{"text", d.message + "\n" + body}, {"markdown", markdown}};
       }
       ordered_json physical{{"artifactLocation", location(diagnostic_path(report, d))}};
-      if (d.span.line != 0) {
+      const auto object = object_path(report, d.span);
+      if (d.span.line != 0 && !object) {
         const LineColumn end = end_position(report, d.span);
         physical["region"] = {{"startLine", d.span.line},
                               {"startColumn", d.span.column},
                               {"endLine", end.line},
                               {"endColumn", end.column}};
       }
-      result["locations"] = ordered_json::array({{{"physicalLocation", std::move(physical)}}});
+      ordered_json where{{"physicalLocation", std::move(physical)}};
+      // A binary layer has no lines: the prim or property the finding is about.
+      if (object) where["logicalLocations"] = ordered_json::array({{{"fullyQualifiedName", *object}, {"kind", "object"}}});
+      result["locations"] = ordered_json::array({std::move(where)});
       ordered_json related = ordered_json::array();
       for (const Note& note : d.notes) {
-        if (!note.span.valid()) continue;
+        if (!note.span.valid() || object_path(report, note.span)) continue;
         const LineColumn end = end_position(report, note.span);
         ordered_json region{{"startLine", note.span.line},
                             {"startColumn", note.span.column},

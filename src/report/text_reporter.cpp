@@ -42,7 +42,8 @@ std::size_t code_points(std::string_view text) {
 void write_excerpt(std::ostream& out, const FileReport& report, const Diagnostic& d, const Painter& paint) {
   if (!d.span.valid() || d.span.file >= report.sources.size()) return;
   const SourceFile& source = report.source(d.span.file);
-  if (d.span.line > source.line_count()) return;
+  // A binary layer has no lines of its own to show (`asset-lint cat` prints it as text).
+  if (source.binary() || d.span.line > source.line_count()) return;
   const std::string_view text = source.view();
   const std::size_t begin = source.line_start(d.span.line);
   std::size_t end = text.find('\n', begin);
@@ -72,14 +73,16 @@ std::string plural(std::size_t n, std::string_view word) {
 
 // "  = the same on 23 more: 'palm' (31:17), 'thumb_base' (64:17), …": the places of the
 // findings a printed one stands for.
-std::string same_on_more(const std::vector<Diagnostic>& diagnostics, const FindingGroup& group) {
+std::string same_on_more(const FileReport& report, const FindingGroup& group) {
+  const std::vector<Diagnostic>& diagnostics = report.diagnostics;
   constexpr std::size_t kListed = 6;
   std::string places;
   for (std::size_t k = 0; k < group.others.size() && k < kListed; ++k) {
     const Diagnostic& d = diagnostics[group.others[k]];
     const std::string name = first_quoted(d.message);
-    places += fmt::format("{}{}{}:{}{}", k ? ", " : "", name.empty() ? "" : "'" + name + "' (", d.span.line,
-                          d.span.column, name.empty() ? "" : ")");
+    const auto object = object_path(report, d.span);
+    const std::string at = object ? "<" + *object + ">" : fmt::format("{}:{}", d.span.line, d.span.column);
+    places += fmt::format("{}{}{}{}", k ? ", " : "", name.empty() ? "" : "'" + name + "' (", at, name.empty() ? "" : ")");
   }
   if (group.others.size() > kListed) places += ", …";
   return fmt::format("and the same on {} more: {}", group.others.size(), places);
@@ -99,22 +102,21 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
       if (d.fix && d.fix->applicability == Applicability::Safe) marker = " (fixable)";
       else if (d.fix && d.fix->applicability == Applicability::Unsafe) marker = " (unsafe fix)";
       out << fmt::format("{} {} {} {}\n",
-                         paint(bold, fmt::format("{}:{}:{}:", one_line(path), d.span.line, d.span.column)),
+                         paint(bold, one_line(location_text(report, d.span, path)) + ":"),
                          paint(severity_style(d.severity), fmt::format("{}:", severity_name(d.severity))),
                          one_line(d.message), paint(fmt::emphasis::faint, fmt::format("[{}]{}", d.rule, marker)));
       if (options.show_source) write_excerpt(out, report, d, paint);
       for (const Note& note : d.notes) {
         if (note.span.valid())
           out << fmt::format("  {} {} {}\n",
-                             paint(bold, fmt::format("{}:{}:{}:", one_line(note_path(report, note)), note.span.line,
-                                                     note.span.column)),
+                             paint(bold, one_line(location_text(report, note.span, note_path(report, note))) + ":"),
                              paint(bold, "note:"), one_line(note.message));
         else
           out << fmt::format("  {} {}\n", paint(bold, "note:"), one_line(note.message));
       }
       if (d.fix) out << fmt::format("  {} {}\n", paint(bold, "help:"), one_line(help_line(*d.fix)));
       if (!group.others.empty())
-        out << fmt::format("  {} {}\n", paint(bold, "="), one_line(same_on_more(report.diagnostics, group)));
+        out << fmt::format("  {} {}\n", paint(bold, "="), one_line(same_on_more(report, group)));
     }
   }
   if (!options.show_summary) return;
@@ -133,7 +135,8 @@ void write_text(std::ostream& out, const std::vector<FileReport>& reports, const
       line += fmt::format(" {} fixable with --fix ({} more with --unsafe-fixes).", s.fixable, s.unsafe_fixable);
   }
   if (problems.binary_usd)
-    line += fmt::format(" Skipped {} (asset-lint reads text USD).", plural(problems.binary_usd, "binary USD file"));
+    line += fmt::format(" Skipped {} (.usdz packages and files that are neither USDA nor crate layers).",
+                        plural(problems.binary_usd, "binary USD file"));
   out << line << "\n";
 }
 

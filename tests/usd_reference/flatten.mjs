@@ -4,20 +4,20 @@
 //
 //   node flatten.mjs <three-usdz-loader package dir> <dir>...
 //
-// Every .usda file under each <dir> is written into OpenUSD's in-memory file system at its
-// own absolute path (so relative asset paths between them resolve as on disk), then each is
-// opened as the root layer of a stage and flattened. Output: {"openusd": version,
+// Every .usda and crate .usd file under each <dir> is written into OpenUSD's in-memory file
+// system at its own absolute path (so relative asset paths between them resolve as on disk),
+// then each .usda file is opened as the root layer of a stage and flattened. Output: {"openusd": version,
 // "stages": [{"path", "flattened" | null, "errors": [OpenUSD's messages]}]}.
 import { readdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { loadUsd } from './load_usd.mjs';
 
-function usdaFiles(dir) {
+function layerFiles(dir, extensions) {
   const found = [];
   for (const entry of readdirSync(dir, { withFileTypes: true })) {
     const path = join(dir, entry.name);
-    if (entry.isDirectory()) found.push(...usdaFiles(path));
-    else if (entry.isFile() && entry.name.endsWith('.usda')) found.push(path);
+    if (entry.isDirectory()) found.push(...layerFiles(path, extensions));
+    else if (entry.isFile() && extensions.some((e) => entry.name.endsWith(e))) found.push(path);
   }
   return found.sort();
 }
@@ -32,8 +32,8 @@ const usd = await loadUsd(packageDir, (text) => {
   if (!startupNoise.test(text) && text.trim() !== '') errors.push(text.trim());
 });
 
-const files = dirs.flatMap((dir) => usdaFiles(resolve(dir)));
-for (const path of files) {
+const files = dirs.flatMap((dir) => layerFiles(resolve(dir), ['.usda']));
+for (const path of dirs.flatMap((dir) => layerFiles(resolve(dir), ['.usda', '.usd']))) {
   usd.FS.mkdirTree(path.substring(0, path.lastIndexOf('/')));
   usd.FS.writeFile(path, readFileSync(path));
 }

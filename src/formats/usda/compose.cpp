@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "formats/usda/parser.h"
+#include "formats/usdc/crate_usda.h"
 #include "rules/reader_rules.h"
 
 namespace assetlint::usda {
@@ -185,14 +186,22 @@ class Composer {
     }
     std::string ext = fs::path(key).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    const char* binary = "is a binary USD file, which a text linter cannot read; its opinions are skipped";
-    if (ext == ".usdc" || ext == ".usdz") return {std::nullopt, binary, Severity::Info, {}};
+    const char* binary = "is a binary USD package (.usdz), which asset-lint does not open; its opinions are skipped";
+    if (ext == ".usdz") return {std::nullopt, binary, Severity::Info, {}};
     std::string error;
     std::optional<std::string> text = files_.read(key, error);
     if (!text) return {std::nullopt, fmt::format("cannot be read ({}); skipped", error), Severity::Info, {}};
-    if (!starts_with_text_header(*text)) return {std::nullopt, binary, Severity::Info, {}};
+    std::shared_ptr<const SourceFile> source;
+    if (usdc::is_crate(*text)) {
+      source = usdc::crate_source(key, *text, error);
+      if (!source) return {std::nullopt, "cannot be read; its opinions are skipped", Severity::Warning, error};
+    } else if (!starts_with_text_header(*text)) {
+      return {std::nullopt, "is neither a USDA nor a crate layer; its opinions are skipped", Severity::Info, {}};
+    } else {
+      source = std::make_shared<const SourceFile>(key, std::move(*text));
+    }
     const auto id = static_cast<FileId>(stage_.sources.size());
-    stage_.sources.push_back(std::make_shared<const SourceFile>(key, std::move(*text)));
+    stage_.sources.push_back(std::move(source));
     stage_.layers.emplace_back();
     parse(id);
     return {id, {}, Severity::Info, {}};

@@ -1,0 +1,82 @@
+// Reads binary USD (crate) layers repeatedly and compares with reading the same layer as
+// USDA text: the crate path is decode + the USDA it reads as + parse; the text path is the
+// parse of that same text (what a .usda file of the same content costs).
+//   bench_crate_read [-n N] file.usd...
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "formats/usda/parser.h"
+#include "formats/usdc/crate_usda.h"
+
+using namespace assetlint;
+
+namespace {
+
+std::size_t count_prims(const std::vector<usda::Prim>& prims) {
+  std::size_t n = prims.size();
+  for (const auto& p : prims) n += count_prims(p.children);
+  return n;
+}
+
+template <class Fn>
+double best_of(int runs, Fn&& fn) {
+  double best = 1e30;
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    fn();
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int runs = 20;
+  std::vector<std::string> paths;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-n" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else paths.push_back(a);
+  }
+  if (paths.empty()) {
+    std::fprintf(stderr, "usage: bench_crate_read [-n runs] file.usd...\n");
+    return 2;
+  }
+  std::printf("file\tcrate_bytes\tusda_bytes\tprims\tcrate_ms\tusda_ms\tcrate_us_per_prim\tusda_us_per_prim\n");
+  for (const auto& path : paths) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    const std::string bytes = ss.str();
+    auto first = usdc::crate_to_usda(bytes);
+    if (auto* e = std::get_if<usdc::CrateError>(&first)) {
+      std::fprintf(stderr, "%s\n", usdc::describe(*e, path).c_str());
+      return 1;
+    }
+    const std::string text = std::get<usdc::CrateText>(first).text;
+    std::size_t prims = 0;
+    const double crate = best_of(runs, [&] {
+      auto r = usdc::crate_to_usda(bytes);
+      const SourceFile file(path, std::move(std::get<usdc::CrateText>(r).text));
+      auto parsed = usda::parse_layer(file, 0);
+      prims = parsed.ok() ? count_prims(parsed.layer().prims) : 0;
+    });
+    const double usda = best_of(runs, [&] {
+      const SourceFile file(path, text);
+      auto parsed = usda::parse_layer(file, 0);
+      if (!parsed.ok()) std::abort();
+    });
+    const double per = static_cast<double>(std::max<std::size_t>(prims, 1));
+    std::printf("%s\t%zu\t%zu\t%zu\t%.3f\t%.3f\t%.2f\t%.2f\n", path.c_str(), bytes.size(), text.size(), prims,
+                crate * 1e3, usda * 1e3, crate * 1e6 / per, usda * 1e6 / per);
+  }
+  return 0;
+}

@@ -1,0 +1,71 @@
+#pragma once
+// Reads the values of a crate layer's fields and writes them as USDA literals, the way
+// OpenUSD's text writer spells them (quaternions w first, floats in their shortest
+// round-trip form, tokens quoted, asset paths in @...@).
+#include <cstdint>
+#include <string>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "formats/usdc/crate_file.h"
+
+namespace assetlint::usdc {
+
+// A value of a type this reader does not write as USDA (splines, unregistered values):
+// the field is left out of the layer.
+struct UnsupportedValue {
+  std::string what;
+};
+
+// A value as USDA writes it, with the type name a dictionary entry declares.
+struct Literal {
+  std::string type;  // "double3", "token[]", "dictionary"; empty for untyped values
+  std::string text;
+};
+
+enum class ItemOp { Explicit, Add, Prepend, Append, Delete, Reorder };
+const char* item_op_keyword(ItemOp op);  // "" for Explicit
+
+// A list-op value (apiSchemas, references, relationship targets, ...): its item lists in
+// the order USDA writes them.
+struct ListOpValue {
+  bool is_explicit = false;
+  std::vector<std::pair<ItemOp, std::vector<std::string>>> parts;
+};
+
+class ValueReader {
+ public:
+  explicit ValueReader(const CrateFile& file) : file_(file) {}
+
+  bool is_list_op(ValueRep rep) const;
+  // `what` names the field in errors ("</robot.physics:mass> default").
+  Literal literal(ValueRep rep, const std::string& what, int indent = 0);
+  ListOpValue list_op(ValueRep rep, const std::string& what);
+  std::vector<std::string> tokens(ValueRep rep, const std::string& what);  // token vector or token[]/string[]
+  std::string token(ValueRep rep, const std::string& what);  // a token value, unquoted
+  std::uint32_t enum_value(ValueRep rep, const std::string& what);         // specifier, variability, permission
+  bool boolean(ValueRep rep, const std::string& what);
+  std::vector<std::pair<std::string, std::string>> string_map(ValueRep rep, const std::string& what);
+  std::vector<std::pair<double, double>> layer_offsets(ValueRep rep, const std::string& what);
+  std::vector<std::pair<std::string, Literal>> time_samples(ValueRep rep, const std::string& what, int indent);
+
+ private:
+  class Guard;
+  Literal scalar(ValueRep rep, const std::string& what, int indent);
+  Literal array(ValueRep rep, const std::string& what);
+  std::string dictionary(Cursor& c, const std::string& what, int indent);
+  Literal vt_value(Cursor& c, const std::string& what, int indent);
+  std::string arc(Cursor& c, unsigned type, const std::string& what, int indent);
+  std::vector<std::string> items(Cursor& c, unsigned type, const std::string& what, int indent);
+  Cursor at(ValueRep rep, const std::string& what) const;
+
+  const CrateFile& file_;
+  std::unordered_set<std::uint64_t> active_;  // values being read (a value containing itself is an error)
+  int depth_ = 0;
+};
+
+std::string quoted(std::string_view s);
+std::string asset_literal(std::string_view s);
+
+}  // namespace assetlint::usdc
