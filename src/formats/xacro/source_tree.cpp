@@ -1,4 +1,5 @@
 #include "formats/xacro/source_tree.h"
+#include <algorithm>
 
 #include <fmt/format.h>
 #include <tinyxml2.h>
@@ -83,7 +84,10 @@ std::optional<SourceTree> parse_tree(std::shared_ptr<const SourceFile> file, Fil
   const xml::XmlScan scan = xml::scan_xml(file->view());
   if (!scan.problems.empty()) {
     const auto& p = scan.problems.front();
-    error = {file->span(id, p.offset, p.length), p.message};
+    // A problem at the end of the file (no root element) has no byte of its own to point at.
+    const std::size_t size = file->view().size();
+    const std::size_t offset = std::min(p.offset, size);
+    error = {file->span(id, offset, std::min(p.length, size - offset)), p.message};
     return std::nullopt;
   }
   tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
