@@ -203,6 +203,8 @@ TEST_CASE("hostile: xacro recursion, include cycles and exponential expansion en
                std::to_string(i - 1) + "}\"/>";
   const FileReport doubled = lint("strings.xacro", strings + "<link name=\"${p40}\"/>");
   CHECK(message(doubled).find("MiB an expression may build") != std::string::npos);
+}
+
 namespace {
 
 std::string crate_fixture() { return test::read_file(test::fixtures_dir() / "usdc" / "value_types.usd"); }
