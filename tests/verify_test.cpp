@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -200,4 +201,37 @@ TEST_CASE("verify: scenes without a payload are not run and say why, errors exit
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("slip") != std::string::npos);
   }
+}
+
+TEST_CASE("verify --fine-tune: the lowest max force and stiffness that still hold, --apply writes them",
+          "[verify]") {
+  // The box needs F ≥ m·g/μ = 10 N; the fixture's drive gives 20 N. The lowest passing max force is
+  // just above 10 N (within the bisection's 2 % of 20 N); the stiffness then only needs to deliver it
+  // at the 10 mm box, 5 mm before closed: k ≥ 10 N / 5 mm = 2000 N/m, also within 2 % of today's 4000.
+  TwoFinger gripper;
+  const auto r = gripper.run({"--fine-tune"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto report = nlohmann::json::parse(r.out);
+  const auto& fine = report["fine_tune"];
+  CHECK(fine["baseline_passed"] == true);
+  CHECK(fine["today"]["max_force"].get<double>() == 20.0);
+  const double force = fine["lowest"]["max_force"].get<double>();
+  CHECK(force >= 10.0);
+  CHECK(force <= 10.0 + 0.02 * 20 + 0.3);
+  const double stiffness = fine["lowest"]["stiffness"].get<double>();
+  CHECK(stiffness >= 0.9 * force / 0.005);
+  CHECK(stiffness <= force / 0.005 + 0.02 * 4000 + 200);
+  // The same damping ratio: d ∝ √k.
+  CHECK(fine["lowest"]["damping"].get<double>() == Approx(40.0 * std::sqrt(stiffness / 4000.0)));
+
+  const auto applied = run_cli({"verify", "two_finger.urdf", "--fine-tune", "--apply"}, gripper.dir.path());
+  INFO(applied.out << applied.err);
+  CHECK(applied.exit_code == 0);
+  const std::string config = read_file(gripper.dir.path() / "asset-lint.toml");
+  CHECK(config.find("stiffness = 4000\n") == std::string::npos);
+  CHECK(config.find("max_force = 20\n") == std::string::npos);
+  CHECK(config.find("[verify]\nwindow_s = 0.3\n") != std::string::npos);  // the rest kept byte for byte
+  const auto again = gripper.run();
+  CHECK(again.exit_code == 0);  // the lowered drive still passes every scene
 }

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "backends/mujoco/mujoco_engine.h"
 #include "commands/command_input.h"
 #include "commands/exit_status.h"
+#include "commands/tune_apply.h"
 #include "commands/tune_derivation.h"
 #include "commands/verify_report.h"
 #include "config/project_root.h"
@@ -17,6 +19,7 @@
 #include "physics/gripper.h"
 #include "physics/sizing.h"
 #include "util/numbers.h"
+#include "verify/fine_tune.h"
 #include "verify/metrics.h"
 
 namespace assetlint::commands {
@@ -33,6 +36,23 @@ std::string spec_line(const char* what, const std::optional<Configured<double>>&
                : fmt::format("{}: not set", what);
 }
 
+// Every scene of `plan` that can be judged, stepped and judged; the rest reported as not run.
+std::optional<std::vector<verify::SceneResult>> run_scenes(verify::Engine& engine, const verify::VerifyPlan& plan,
+                                                           const Settings& settings, long& steps, std::string& error) {
+  std::vector<verify::SceneResult> results;
+  for (const verify::SceneSpec& scene : plan.scenes) {
+    if (!scene.not_run.empty()) {
+      results.push_back(verify::not_run(scene));
+      continue;
+    }
+    auto trajectory = engine.run(plan, scene, error);
+    if (!trajectory) return std::nullopt;
+    steps += trajectory->steps;
+    results.push_back(verify::judge(plan, scene, std::move(*trajectory), settings.verify));
+  }
+  return results;
+}
+
 }  // namespace
 
 int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -41,11 +61,16 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
                "asset-lint verify"};
   std::string path, format = "text", engine_name = "mujoco";
   std::optional<std::string> config, plot;
+  bool fine_tune = false, apply = false;
   app.add_option("asset", path, "The gripper: a .urdf file")->required();
   app.add_option("--engine", engine_name, "The engine that steps the scenes: mujoco (MuJoCo 2.2.2)")
       ->check(CLI::IsMember({"mujoco"}));
   app.add_option("--output-format", format, "text or json")->check(CLI::IsMember({"text", "json"}));
   app.add_option("--plot", plot, "Write an SVG of finger opening, object height and penetration over time");
+  auto* fine = app.add_flag("--fine-tune", fine_tune,
+                            "Bisect the lowest max force, then the lowest stiffness (damping re-derived for the same "
+                            "damping ratio), for which every scene still passes");
+  app.add_flag("--apply", apply, "With --fine-tune: write those values as `tune --apply` does")->needs(fine);
   app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the asset)");
   CompositionScope scope;
   add_scope_options(app, scope);
@@ -154,18 +179,45 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
 
   backends::mujoco::MujocoEngine engine;
   report.engine = engine.info(plan);
-  for (const verify::SceneSpec& scene : plan.scenes) {
-    if (!scene.not_run.empty()) {
-      report.scenes.push_back(verify::not_run(scene));
-      continue;
-    }
-    auto trajectory = engine.run(plan, scene, error);
-    if (!trajectory) return fail(fmt::format("{}: {}", path, error));
-    report.scenes.push_back(verify::judge(plan, scene, std::move(*trajectory), settings.verify));
+  auto results = run_scenes(engine, plan, settings, report.steps, error);
+  if (!results) return fail(fmt::format("{}: {}", path, error));
+  report.scenes = std::move(*results);
+  if (fine_tune) {
+    // A drive passes when every scene that can be judged passes (scenes not run are not judged).
+    bool failed = false;
+    const auto passes = [&](const verify::DriveSpec& drive) {
+      verify::VerifyPlan trial = plan;
+      trial.drive = drive;
+      auto scenes = run_scenes(engine, trial, settings, report.steps, error);
+      if (!scenes) {
+        failed = true;
+        return false;
+      }
+      for (const auto& s : *scenes)
+        if (s.ran && !s.passed) return false;
+      return true;
+    };
+    report.fine_tune = verify::fine_tune(plan.drive, passes);
+    if (failed) return fail(fmt::format("{}: {}", path, error));
+    if (std::any_of(report.scenes.begin(), report.scenes.end(), [](const auto& s) { return !s.ran; }))
+      report.fine_tune->notes.push_back("scenes not run are not judged by the fine-tuning");
   }
   if (format == "json") write_verify_json(out, report);
   else write_verify_text(out, report, settings.verify);
   if (plot && !write_text_file(*plot, verify_svg(report, plan, settings.verify), error)) return fail(error);
+  if (apply && report.fine_tune && report.fine_tune->baseline_passed) {
+    TuneDerivation lowered;
+    lowered.path = path;
+    lowered.joint = joint;
+    lowered.mimics = plan.layout.mimics;
+    lowered.recommended.max_force = report.fine_tune->lowest.max_force;
+    lowered.recommended.stiffness = report.fine_tune->lowest.stiffness;
+    lowered.recommended.damping = report.fine_tune->lowest.damping;
+    if (format == "text") out << "\n";
+    if (carry_out(plan_tune_apply(lowered, asset, settings, config), false, format == "text" ? out : err, err) ==
+        kExitError)
+      return kExitError;
+  }
   return report.passed() ? kExitClean : kExitFindings;
 }
 

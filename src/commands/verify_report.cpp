@@ -84,9 +84,39 @@ void write_verify_text(std::ostream& out, const VerifyReport& report, const Veri
                          r.spec.object->sized_for);
     for (const auto& failure : r.failures) out << "      " << failure << "\n";
   }
+  if (report.fine_tune) {
+    out << "\n";
+    for (const auto& line : fine_tune_lines(report)) out << line << "\n";
+  }
   out << fmt::format("\n{}: {} passed, {} failed, {} not run{}.\n",
                      report.passed() ? "Passed" : failed ? "Failed" : "Not verified", passed, failed, skipped,
                      skipped ? " (a scene not run is not verified)" : "");
+  out << fmt::format("Engine steps: {}\n", report.steps);
+}
+
+// The fine-tuning's answer beside today's values, in the joint's units.
+std::vector<std::string> fine_tune_lines(const VerifyReport& report) {
+  const verify::FineTuneResult& f = *report.fine_tune;
+  struct {
+    verify::DriveSpec drive;
+  } today{f.trials.empty() ? f.lowest : f.trials.front().drive};
+  std::vector<std::string> lines;
+  const char* force = report.angular ? "N·m" : "N";
+  const char* per = report.angular ? "rad" : "m";
+  lines.push_back(fmt::format("Fine-tuning ({} runs of every scene): can the max force and the stiffness be lowered "
+                              "while every scene still passes?",
+                              f.trials.size()));
+  for (const auto& note : f.notes) lines.push_back("  " + note);
+  if (!f.baseline_passed) return lines;
+  if (today.drive.max_force && f.lowest.max_force)
+    lines.push_back(fmt::format("  max force  {} {} → lowest passing {} {}", format_number(*today.drive.max_force, 4), force,
+                                format_number(*f.lowest.max_force, 4), force));
+  lines.push_back(fmt::format("  stiffness  {} {}/{} → lowest passing {} {}/{}", format_number(today.drive.stiffness, 4),
+                              force, per, format_number(f.lowest.stiffness, 4), force, per));
+  lines.push_back(fmt::format("  damping    {} {}·s/{} → {} {}·s/{} (the same damping ratio: d ∝ √k)",
+                              format_number(today.drive.damping, 4), force, per, format_number(f.lowest.damping, 4),
+                              force, per));
+  return lines;
 }
 
 void write_verify_json(std::ostream& out, const VerifyReport& report) {
@@ -135,6 +165,20 @@ void write_verify_json(std::ostream& out, const VerifyReport& report) {
     scenes.push_back(scene);
   }
   doc["scenes"] = scenes;
+  if (report.fine_tune) {
+    const verify::FineTuneResult& f = *report.fine_tune;
+    const verify::DriveSpec& today = f.trials.front().drive;
+    const auto optional_number = [](const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); };
+    doc["fine_tune"] = Json{{"baseline_passed", f.baseline_passed},
+                            {"runs", f.trials.size()},
+                            {"today", Json{{"max_force", optional_number(today.max_force)},
+                                           {"stiffness", today.stiffness},
+                                           {"damping", today.damping}}},
+                            {"lowest", Json{{"max_force", optional_number(f.lowest.max_force)},
+                                            {"stiffness", f.lowest.stiffness},
+                                            {"damping", f.lowest.damping}}},
+                            {"notes", f.notes}};
+  }
   out << doc.dump(2) << "\n";
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 // How `asset-lint verify` prints its results: text, JSON (docs/verify.md) and the SVG plot.
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "verify/engine.h"
+#include "verify/fine_tune.h"
 #include "verify/metrics.h"
 
 namespace assetlint::commands {
@@ -16,6 +18,8 @@ struct VerifyReport {
   verify::EngineInfo engine;
   std::vector<verify::SceneResult> scenes;
   bool angular = true;
+  long steps = 0;  // engine steps over every scene
+  std::optional<verify::FineTuneResult> fine_tune;
   bool passed() const;
 };
 

@@ -23,6 +23,7 @@ struct Trajectory {
   std::vector<Sample> samples;  // the first at t = 0
   bool diverged = false;
   std::string divergence;       // what: "non-finite state at 0.31 s", "MuJoCo warning: …"
+  long steps = 0;               // engine steps taken
 };
 
 }  // namespace assetlint::verify

@@ -208,6 +208,7 @@ std::optional<verify::Trajectory> MujocoEngine::run(const VerifyPlan& plan, cons
       for (int step = 0; step < per_frame; ++step) {
         set_inputs(d->time);
         mj_step(m, d);
+        ++trajectory.steps;
         for (int c = 0; c < d->ncon; ++c)
           if (d->contact[c].geom1 == object_geom || d->contact[c].geom2 == object_geom)
             penetration = std::max(penetration, -d->contact[c].dist);
