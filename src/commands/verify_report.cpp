@@ -45,6 +45,31 @@ std::string measurements(const verify::SceneResult& r, const VerifySettings& lim
   return text;
 }
 
+// The fine-tuning's answer beside today's values, in the joint's units.
+std::vector<std::string> fine_tune_lines(const VerifyReport& report) {
+  const verify::FineTuneResult& f = *report.fine_tune;
+  struct {
+    verify::DriveSpec drive;
+  } today{f.trials.empty() ? f.lowest : f.trials.front().drive};
+  std::vector<std::string> lines;
+  const char* force = report.angular ? "N·m" : "N";
+  const char* per = report.angular ? "rad" : "m";
+  lines.push_back(fmt::format("Fine-tuning ({} runs of every scene): can the max force and the stiffness be lowered "
+                              "while every scene still passes?",
+                              f.trials.size()));
+  for (const auto& note : f.notes) lines.push_back("  " + note);
+  if (!f.baseline_passed) return lines;
+  if (today.drive.max_force && f.lowest.max_force)
+    lines.push_back(fmt::format("  max force  {} {} → lowest passing {} {}", format_number(*today.drive.max_force, 4), force,
+                                format_number(*f.lowest.max_force, 4), force));
+  lines.push_back(fmt::format("  stiffness  {} {}/{} → lowest passing {} {}/{}", format_number(today.drive.stiffness, 4),
+                              force, per, format_number(f.lowest.stiffness, 4), force, per));
+  lines.push_back(fmt::format("  damping    {} {}·s/{} → {} {}·s/{} (the same damping ratio: d ∝ √k)",
+                              format_number(today.drive.damping, 4), force, per, format_number(f.lowest.damping, 4),
+                              force, per));
+  return lines;
+}
+
 }  // namespace
 
 bool VerifyReport::passed() const {
@@ -92,31 +117,6 @@ void write_verify_text(std::ostream& out, const VerifyReport& report, const Veri
                      report.passed() ? "Passed" : failed ? "Failed" : "Not verified", passed, failed, skipped,
                      skipped ? " (a scene not run is not verified)" : "");
   out << fmt::format("Engine steps: {}\n", report.steps);
-}
-
-// The fine-tuning's answer beside today's values, in the joint's units.
-std::vector<std::string> fine_tune_lines(const VerifyReport& report) {
-  const verify::FineTuneResult& f = *report.fine_tune;
-  struct {
-    verify::DriveSpec drive;
-  } today{f.trials.empty() ? f.lowest : f.trials.front().drive};
-  std::vector<std::string> lines;
-  const char* force = report.angular ? "N·m" : "N";
-  const char* per = report.angular ? "rad" : "m";
-  lines.push_back(fmt::format("Fine-tuning ({} runs of every scene): can the max force and the stiffness be lowered "
-                              "while every scene still passes?",
-                              f.trials.size()));
-  for (const auto& note : f.notes) lines.push_back("  " + note);
-  if (!f.baseline_passed) return lines;
-  if (today.drive.max_force && f.lowest.max_force)
-    lines.push_back(fmt::format("  max force  {} {} → lowest passing {} {}", format_number(*today.drive.max_force, 4), force,
-                                format_number(*f.lowest.max_force, 4), force));
-  lines.push_back(fmt::format("  stiffness  {} {}/{} → lowest passing {} {}/{}", format_number(today.drive.stiffness, 4),
-                              force, per, format_number(f.lowest.stiffness, 4), force, per));
-  lines.push_back(fmt::format("  damping    {} {}·s/{} → {} {}·s/{} (the same damping ratio: d ∝ √k)",
-                              format_number(today.drive.damping, 4), force, per, format_number(f.lowest.damping, 4),
-                              force, per));
-  return lines;
 }
 
 void write_verify_json(std::ostream& out, const VerifyReport& report) {
