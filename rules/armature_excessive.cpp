@@ -44,6 +44,7 @@ class ArmatureExcessive final : public Rule {
       if (ratio <= factor) continue;
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
       Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, model.spring_drive(joint)};
+      if (crutch(c)) c.shared = shared_by_a_steady_drive(model, asset, joint);
       report(c, out);
     }
   }
@@ -91,6 +92,7 @@ class ArmatureExcessive final : public Rule {
     double factor;
     double flywheel;
     std::optional<DrivenJoint> driven;
+    const Joint* shared = nullptr;  // a steady drive with the same armature literal
     const char* unit() const { return is_angular(joint.type) ? "kg·m²" : "kg"; }
     // Far above everything the joint moves: the drive turns a flywheel.
     bool dwarfs() const { return !moved.lighter && ratio > flywheel; }
@@ -121,20 +123,34 @@ class ArmatureExcessive final : public Rule {
       drive_effect(c, d);
       return;
     }
-    if (joint.actuation == Actuation::Passive) {
+    if (joint.actuation == Actuation::Passive && !c.dwarfs()) {
+      Diagnostic& d = out.report(at, Severity::Info,
+                                 fmt::format("armature {} of {} ({}× {}) on a free joint no actuator moves", amount,
+                                             short_name(joint), times, against));
+      d.note(moved_text(c));
+      d.note("No actuator reaches this joint and no loop or coupling ties it to one that does: it moves only under "
+             "gravity, contact and the reaction of its links, so the armature damps how it swings and loads no drive. "
+             "No real mechanism has that inertia; remove it if the joint should swing freely.");
+      return;
+    }
+    if (joint.actuation == Actuation::Passive || joint.actuation == Actuation::Linkage) {
       Diagnostic& d = out.report(at, Severity::Warning,
                                  fmt::format("armature {} of {} ({}× {}) on a joint no actuator moves", amount,
                                              short_name(joint), times, against));
       d.note(moved_text(c));
-      d.note("No actuator reaches this joint, directly or through a fixed tendon, so no motor's rotor is reflected onto "
-             "it: the armature is inertia the real mechanism does not have, and it slows every motion the linkage "
-             "makes. If it only steadies a closed chain, keep it as small as does that.");
+      d.note(joint.actuation == Actuation::Linkage
+                 ? "No actuator reaches this joint, directly or through a fixed tendon, but a loop or coupling ties it to "
+                   "the driven mechanism: no motor's rotor is reflected onto it, so the armature is inertia the real "
+                   "mechanism does not have, and every actuator that moves the linkage drags it. If it only steadies a "
+                   "closed chain, keep it as small as does that."
+                 : "No actuator reaches this joint, directly or through a fixed tendon, so no motor's rotor is reflected "
+                   "onto it: the armature is inertia the real mechanism does not have.");
       drive_effect(c, d);
       return;
     }
     if (const auto without = crutch(c)) {
       const physics::SimulationRate& rate = c.driven->rate;
-      Diagnostic& d = out.report(at, Severity::Warning,
+      Diagnostic& d = out.report(at, c.shared ? Severity::Info : Severity::Warning,
                                  fmt::format("armature {} of {} ({}× {}) is what keeps its drive {}", amount,
                                              short_name(joint), times, against,
                                              rate.solver == physics::Solver::MuJoCo
@@ -158,6 +174,13 @@ class ArmatureExcessive final : public Rule {
                                 mujoco_servo(*c.driven, without->inertia)) == physics::StepVerdict::Decays)
         d.note("Under <option integrator=\"implicitfast\">, which takes the actuator's kv implicitly, the drive would be "
                "damped stably without the armature.");
+      if (c.shared)
+        d.note(c.joint.armature->span,
+               fmt::format("This armature is one literal shared with {}, whose drive is steady without it: a value "
+                           "set once for a motor type, its reflected rotor inertia, rather than a lever tuned for "
+                           "this joint. Declare the motor to record that; the drive then depends on it only as the "
+                           "real joint does.",
+                           joint_label(*c.shared)));
       drive_effect(c, d);
       return;
     }
@@ -213,19 +236,40 @@ class ArmatureExcessive final : public Rule {
   // fail: past PhysX's bound, or (MuJoCo) with a step map that does not decay. On what the
   // solver divides by (DrivenJoint::solver_inertia) less the armature, which adds to Mᵢᵢ and to
   // 1/r one for one: whether the drive is stable is the solver's question, not the guide's figure's.
-  static std::optional<Crutch> crutch(const Candidate& c) {
-    if (!c.driven || c.driven->acceleration() || !c.driven->judged.known) return std::nullopt;
-    const double inertia = c.driven->solver_inertia() - c.armature;
+  static std::optional<Crutch> crutch(const Candidate& c) { return crutch(c.driven, c.armature); }
+  static std::optional<Crutch> crutch(const std::optional<DrivenJoint>& driven, double armature) {
+    if (!driven || driven->acceleration() || !driven->judged.known) return std::nullopt;
+    const double inertia = driven->solver_inertia() - armature;
     if (!(inertia > 0)) return std::nullopt;
-    const double without = physics::natural_frequency(c.driven->stiffness, inertia);
-    const physics::SimulationRate& rate = c.driven->rate;
+    const double without = physics::natural_frequency(driven->stiffness, inertia);
+    const physics::SimulationRate& rate = driven->rate;
     if (without <= rate.frequency_bound()) return std::nullopt;
     if (rate.solver == physics::Solver::MuJoCo) {
-      if (!c.driven->damping_known()) return std::nullopt;  // the step's verdict needs the damping
-      if (physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*c.driven, inertia)) == physics::StepVerdict::Decays)
+      if (!driven->damping_known()) return std::nullopt;  // the step's verdict needs the damping
+      if (physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*driven, inertia)) == physics::StepVerdict::Decays)
         return std::nullopt;
     }
     return Crutch{without, inertia};
+  }
+
+  // Another actuated joint that takes its armature from the same literal (one default class,
+  // one servo type) and whose drive is steady without it: the value is the motor's, set once
+  // for every joint it turns, not a lever tuned for this joint's stability.
+  static const Joint* shared_by_a_steady_drive(const DriveModel& model, const Asset& asset, const Joint& joint) {
+    const Span& literal = joint.armature->span;
+    if (!literal.valid()) return nullptr;
+    for (const Joint& other : asset.joints) {
+      if (&other == &joint || !other.armature || other.actuation == Actuation::Passive ||
+          other.actuation == Actuation::Linkage)
+        continue;
+      const Span& at = other.armature->span;
+      if (at.file != literal.file || at.offset != literal.offset) continue;
+      const std::optional<DrivenJoint> driven = model.spring_drive(other);
+      if (driven && !driven->acceleration() && driven->judged.known && (driven->rate.solver != physics::Solver::MuJoCo || driven->damping_known()) &&
+          !crutch(driven, other.armature->value))
+        return &other;
+    }
+    return nullptr;
   }
 
   static std::string moved_text(const Candidate& c) {

@@ -83,10 +83,21 @@ class StructureMimicReference final : public Rule {
           d.note(fmt::format("{}the joint follows nothing: it moves freely or stays where the simulator leaves it.",
                              asset.format == SourceFormat::Urdf ? "urdfdom accepts the file, but " : "The file loads, but "));
       } else if (reference->is_mimic()) {
-        out.report(mimic.reference.span, fmt::format("{} mimics '{}', which itself mimics '{}'", joint_label(joint),
-                                                     reference->name.text, reference->mimic->reference.text))
-            .note("Mimic chains are not supported by PhysX or most importers.")
-            .note(reference->name.span, fmt::format("Make both follow '{}'.", reference->mimic->reference.text));
+        const bool mujoco = asset.format == SourceFormat::Mjcf;
+        Diagnostic& d =
+            out.report(mimic.reference.span, mujoco ? Severity::Info : Severity::Error,
+                       fmt::format("{} {} '{}', which itself {} '{}'", joint_label(joint),
+                                   mujoco ? "is coupled to" : "mimics", reference->name.text,
+                                   mujoco ? "is coupled to" : "mimics", reference->mimic->reference.text));
+        // MuJoCo solves all equality constraints together (engine_core_constraint.c builds one
+        // row per equality in the same constraint system), so a chain is as valid as a star.
+        if (mujoco)
+          d.note("MuJoCo solves every equality constraint together, so the chain simulates as written there; a "
+                 "conversion to URDF or USD needs it flattened, because PhysX's mimic joint and most URDF importers "
+                 "follow only a joint that is not itself a mimic.");
+        else
+          d.note("Mimic chains are not supported by PhysX or most importers.");
+        d.note(reference->name.span, fmt::format("Make both follow '{}'.", reference->mimic->reference.text));
       } else if (!is_single_dof(reference->type)) {
         out.report(mimic.reference.span,
                    fmt::format("{} mimics {}, which has no single degree of freedom", joint_label(joint),

@@ -127,8 +127,11 @@ struct Motor {
 };
 
 // Whether an actuator moves a joint. MJCF says so for every joint (an actuator's joint or
-// fixed-tendon transmission); URDF and USD do not, so their joints stay Unknown.
-enum class Actuation { Unknown, Actuated, Passive };
+// fixed-tendon transmission, a coupling tendon, a mocap weld); URDF and USD do not, so their
+// joints stay Unknown. A passive joint is a Linkage when a loop closure or a coupling ties it
+// to the driven mechanism, so the actuators move it; Passive ones move only under gravity,
+// contact and the reaction of their links.
+enum class Actuation { Unknown, Actuated, Passive, Linkage };
 
 // The actuator's transmission ratio where the asset declares one (MJCF actuator `gear`):
 // joint torque = ratio · actuator force, so an armature implies I_rotor = armature / ratio².

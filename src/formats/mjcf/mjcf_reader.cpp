@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "formats/mjcf/mjcf_actuators.h"
+#include "formats/mjcf/mjcf_couplings.h"
 #include "formats/mjcf/mjcf_dampratio.h"
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_geom_inertia.h"
@@ -86,10 +87,14 @@ class Reader {
         }
       }
     }
+    const Couplings couplings = read_couplings(sources_, defaults_, compiler_, sections, values_, result_.asset);
+    drive_through_couplings(couplings, result_.asset);
     // MJCF lists every actuator: a joint none of them reaches is moved only by its links.
-    if (any_actuator && !unnamed_transmission)
+    if (any_actuator && !unnamed_transmission) {
       for (Joint& joint : result_.asset.joints)
         if (joint.actuation == Actuation::Unknown) joint.actuation = Actuation::Passive;
+      mark_linkages(couplings, result_.asset);
+    }
     // After the actuators: which side of a coupling is driven decides which one follows.
     for (const XMLElement* el : joint_equalities) read_equality_joint(el);
     result_.asset.index_names();  // after the equalities: they make the mimics
@@ -454,7 +459,7 @@ class Reader {
                                [&](const Joint& j) { return j.name.text == joint2; });
     const double c0 = c->empty() ? 0.0 : (*c)[0], c1 = c->size() > 1 ? (*c)[1] : 0.0;
     if (leader != result_.asset.joints.end() && follower->actuation == Actuation::Actuated &&
-        leader->actuation == Actuation::Passive && c1 != 0 && std::isfinite(c0 / c1)) {
+        (leader->actuation == Actuation::Passive || leader->actuation == Actuation::Linkage) && c1 != 0 && std::isfinite(c0 / c1)) {
       if (leader->mimic) return;
       Mimic mimic;
       mimic.span = span;

@@ -1,0 +1,190 @@
+#include "formats/mjcf/mjcf_couplings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string_view>
+
+#include "util/numbers.h"
+
+namespace assetlint::mjcf {
+namespace {
+
+using tinyxml2::XMLElement;
+
+// A limited fixed tendon whose range is at most this fraction of the length its joints could
+// sweep on their own holds them to one another: a coupling, not a travel stop. (The OpenAI
+// Shadow hand's ±0.001 m on a 0.024 m sweep is 8 %; its travel stops allow the whole sweep.)
+constexpr double kCouplingWidth = 0.1;
+
+struct Bodies {
+  std::set<std::string> mocap;
+  std::map<std::string, std::string> site_body;
+};
+
+void walk_bodies(const MjcfSources& sources, const XMLElement* parent, const std::string& body, Bodies& out) {
+  for (const XMLElement* el : sources.children(parent)) {
+    const std::string_view tag = el->Name();
+    if (tag == "site") {
+      if (const char* name = el->Attribute("name")) out.site_body[name] = body;
+    } else if (tag == "body" || tag == "frame") {
+      const char* name = el->Attribute("name");
+      const std::string here = tag == "frame" ? body : name ? std::string(name) : std::string();
+      if (tag == "body" && name && el->Attribute("mocap") && trim(el->Attribute("mocap")) == "true")
+        out.mocap.insert(name);
+      walk_bodies(sources, el, here, out);
+    }
+  }
+}
+
+std::optional<std::size_t> joint_named(const Asset& asset, std::string_view name) {
+  for (std::size_t i = 0; i < asset.joints.size(); ++i)
+    if (asset.joints[i].name.text == name) return i;
+  return std::nullopt;
+}
+
+// The joints between `body` and the world, nearest first (indices into asset.joints).
+std::vector<std::size_t> path_to_root(const Asset& asset, const std::string& body) {
+  std::vector<std::size_t> path;
+  std::string at = body;
+  for (std::size_t guard = 0; !at.empty() && at != "world" && guard <= asset.joints.size(); ++guard) {
+    std::string parent;
+    for (std::size_t i = 0; i < asset.joints.size(); ++i)
+      if (asset.joints[i].child.text == at) {
+        path.push_back(i);
+        parent = asset.joints[i].parent.text;
+      }
+    at = parent;
+  }
+  return path;
+}
+
+// The body an equality names on one side: `bodyN`, else the body holding `siteN`; "world" when
+// neither is written (MuJoCo's default for the second side).
+std::optional<std::string> side(const XMLElement* el, const char* body, const char* site, const Bodies& bodies) {
+  if (const char* b = el->Attribute(body)) return std::string(trim(b));
+  if (const char* s = el->Attribute(site)) {
+    const auto found = bodies.site_body.find(std::string(trim(s)));
+    if (found == bodies.site_body.end()) return std::nullopt;
+    return found->second.empty() ? std::string("world") : found->second;
+  }
+  return std::string("world");
+}
+
+struct FixedTendon {
+  std::vector<std::string> joints;
+  bool coupling = false;
+};
+
+FixedTendon read_fixed(const XMLElement* fixed, const Defaults& defaults, const Compiler& compiler, Values& values,
+                       const Asset& asset) {
+  FixedTendon tendon;
+  double sweep = 0;
+  bool sweep_known = true;
+  for (const XMLElement* j = fixed->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+    const char* name = j->Attribute("joint");
+    if (!name) continue;
+    tendon.joints.emplace_back(trim(name));
+    const auto index = joint_named(asset, tendon.joints.back());
+    const Joint* joint = index ? &asset.joints[*index] : nullptr;
+    const double coef = j->DoubleAttribute("coef", 1.0);
+    if (joint && joint->lower && joint->upper) sweep += std::abs(coef) * (joint->upper->value - joint->lower->value);
+    else sweep_known = false;
+  }
+  const char* cls = fixed->Attribute("class");
+  const auto& defs = defaults.elements(cls && defaults.has_class(cls) ? cls : "main", "tendon");
+  const Attr range_attr = Defaults::lookup(fixed, defs, "range");
+  const bool limited = values.flag(Defaults::lookup(fixed, defs, "limited"), "limited")
+                           .value_or(static_cast<bool>(range_attr) && compiler.autolimits);
+  if (limited && range_attr && sweep_known && sweep > 0)
+    if (const auto range = values.numbers(range_attr, "range", 2))
+      tendon.coupling = (*range)[1] - (*range)[0] <= kCouplingWidth * sweep;
+  return tendon;
+}
+
+}  // namespace
+
+Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, const Compiler& compiler,
+                         const std::vector<const XMLElement*>& sections, Values& values, const Asset& asset) {
+  Couplings out;
+  Bodies bodies;
+  for (const XMLElement* el : sections)
+    if (std::string_view(el->Name()) == "worldbody") walk_bodies(sources, el, "", bodies);
+
+  std::map<std::string, FixedTendon> named;
+  for (const XMLElement* el : sections) {
+    if (std::string_view(el->Name()) != "tendon") continue;
+    for (const XMLElement* fixed : sources.children(el)) {
+      if (std::string_view(fixed->Name()) != "fixed") continue;
+      FixedTendon tendon = read_fixed(fixed, defaults, compiler, values, asset);
+      if (tendon.coupling) out.tendons.push_back(tendon.joints);
+      if (const char* name = fixed->Attribute("name")) named[std::string(trim(name))] = std::move(tendon);
+    }
+  }
+  for (const XMLElement* el : sections) {
+    if (std::string_view(el->Name()) != "equality") continue;
+    for (const XMLElement* c : sources.children(el)) {
+      const std::string_view tag = c->Name();
+      const char* cls = c->Attribute("class");
+      const auto& defs = defaults.elements(cls && defaults.has_class(cls) ? cls : "main", "equality");
+      if (values.flag(Defaults::lookup(c, defs, "active"), "active") == false) continue;
+      if (tag == "joint") {
+        for (const char* attr : {"joint1", "joint2"})
+          if (const char* j = c->Attribute(attr)) out.coupled_joints.insert(std::string(trim(j)));
+      } else if (tag == "tendon") {
+        for (const char* attr : {"tendon1", "tendon2"})
+          if (const char* t = c->Attribute(attr); t && named.contains(std::string(trim(t))))
+            out.tendons.push_back(named.at(std::string(trim(t))).joints);
+      } else if (tag == "connect" || tag == "weld") {
+        const auto a = side(c, "body1", "site1", bodies);
+        const auto b = side(c, "body2", "site2", bodies);
+        if (!a || !b) continue;
+        if (bodies.mocap.contains(*a)) out.mocap_driven.push_back(*b);
+        else if (bodies.mocap.contains(*b)) out.mocap_driven.push_back(*a);
+        else out.loops.emplace_back(*a, *b);
+      }
+    }
+  }
+  return out;
+}
+
+void drive_through_couplings(const Couplings& couplings, Asset& asset) {
+  for (const std::string& body : couplings.mocap_driven)
+    for (const std::size_t i : path_to_root(asset, body)) asset.joints[i].actuation = Actuation::Actuated;
+  // Until nothing changes: a coupling tendon may reach a joint through another one.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& members : couplings.tendons) {
+      const bool driven = std::any_of(members.begin(), members.end(), [&](const std::string& name) {
+        const auto i = joint_named(asset, name);
+        return i && asset.joints[*i].actuation == Actuation::Actuated;
+      });
+      if (!driven) continue;
+      for (const std::string& name : members)
+        if (const auto i = joint_named(asset, name); i && asset.joints[*i].actuation != Actuation::Actuated) {
+          asset.joints[*i].actuation = Actuation::Actuated;
+          changed = true;
+        }
+    }
+  }
+}
+
+void mark_linkages(const Couplings& couplings, Asset& asset) {
+  const auto link = [&](std::optional<std::size_t> i) {
+    if (i && asset.joints[*i].actuation == Actuation::Passive) asset.joints[*i].actuation = Actuation::Linkage;
+  };
+  for (const auto& members : couplings.tendons)
+    for (const std::string& name : members) link(joint_named(asset, name));
+  for (const std::string& name : couplings.coupled_joints) link(joint_named(asset, name));
+  // The joints of a loop: on one body's path to the root and not on the other's.
+  for (const auto& [a, b] : couplings.loops) {
+    const std::vector<std::size_t> pa = path_to_root(asset, a), pb = path_to_root(asset, b);
+    for (const std::size_t i : pa)
+      if (std::find(pb.begin(), pb.end(), i) == pb.end()) link(i);
+    for (const std::size_t i : pb)
+      if (std::find(pa.begin(), pa.end(), i) == pa.end()) link(i);
+  }
+}
+
+}  // namespace assetlint::mjcf

@@ -1,0 +1,43 @@
+#pragma once
+// The constraints of an MJCF model that tie one joint's motion to another's: what decides
+// whether a joint no actuator names is driven anyway, coupled into a mechanism, or free.
+//   - A fixed tendon that MuJoCo holds to a narrow range (or an <equality><tendon>) is a
+//     transmission: the Shadow hand's distal joint follows its middle joint that way, and the
+//     motor that turns one turns both.
+//   - A <weld> or <connect> to a mocap body is how a model is driven kinematically (a
+//     teleoperated arm): every joint between that body and the root moves with it.
+//   - A <connect> or <weld> between two bodies of the robot closes a loop (a four-bar
+//     linkage), and an <equality><joint> couples two joints: their joints belong to a mechanism.
+#include <tinyxml2.h>
+
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "formats/mjcf/mjcf_defaults.h"
+#include "formats/mjcf/mjcf_values.h"
+#include "model/asset.h"
+
+namespace assetlint::mjcf {
+
+struct Couplings {
+  std::vector<std::vector<std::string>> tendons;  // the joints of each coupling tendon
+  std::vector<std::pair<std::string, std::string>> loops;  // bodies a connect or weld ties together
+  std::vector<std::string> mocap_driven;                   // bodies welded or connected to a mocap body
+  std::set<std::string> coupled_joints;                    // named by an <equality><joint>
+};
+
+// Reads the couplings of a model's top-level sections (after the bodies and joints).
+Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, const Compiler& compiler,
+                         const std::vector<const tinyxml2::XMLElement*>& sections, Values& values, const Asset& asset);
+
+// Marks as actuated the joints an actuator reaches through a coupling tendon, and the joints a
+// mocap body drives. Runs after the actuators are read, before undriven joints become passive.
+void drive_through_couplings(const Couplings& couplings, Asset& asset);
+
+// Marks as part of a linkage the passive joints that a loop, a joint equality or a coupling
+// tendon ties to the rest of the mechanism.
+void mark_linkages(const Couplings& couplings, Asset& asset);
+
+}  // namespace assetlint::mjcf
