@@ -81,6 +81,28 @@ TEST_CASE("io: a crate .usd is read, a broken one and a .usdz named explicitly a
   CHECK(text.out == "No problems found in 1 file.\n");
 }
 
+TEST_CASE("io: a Git LFS pointer is named as one, checked directly, in a directory and as a sublayer", "[io]") {
+  TempDir dir;
+  const std::string pointer =
+      "version https://git-lfs.github.com/spec/v1\noid sha256:4d7a214614ab2935c943f9e0ff69d22eadbb8f32b1258daaa5e2ca24d17e2393\n"
+      "size 1048576\n";
+  std::filesystem::create_directories(dir.path() / "robots");
+  write_file(dir.path() / "robots" / "arm_base.usd", pointer);
+  auto direct = run_cli({"robots/arm_base.usd"}, dir.path());
+  CHECK(direct.exit_code == 2);
+  CHECK(direct.err.find("'robots/arm_base.usd' is a Git LFS pointer, not the layer") != std::string::npos);
+  CHECK(direct.err.find("git lfs pull") != std::string::npos);
+  auto tree = run_cli({"robots"}, dir.path());
+  CHECK(tree.exit_code == 2);
+  CHECK(tree.err.find("is a Git LFS pointer") != std::string::npos);
+  CHECK(tree.out.find("binary USD") == std::string::npos);
+  write_file(dir.path() / "arm.usda", "#usda 1.0\n(\n    subLayers = [@./robots/arm_base.usd@]\n)\n\ndef Xform \"arm\"\n{\n}\n");
+  auto stack = run_cli({"arm.usda"}, dir.path());
+  CHECK(stack.exit_code == 1);
+  CHECK(stack.out.find("is a Git LFS pointer, not the layer") != std::string::npos);
+  CHECK(stack.out.find("warning") != std::string::npos);
+}
+
 TEST_CASE("io: JSON, SARIF, JUnit and GitHub reports carry the paths not read", "[io]") {
   TempDir dir;
   make_tree(dir.path());

@@ -36,6 +36,13 @@ FileKind file_kind(const std::string& path, std::string_view text) {
   return FileKind::Unsupported;
 }
 
+bool is_lfs_pointer(std::string_view head) { return head.starts_with("version https://git-lfs.github.com/spec/"); }
+
+std::string lfs_pointer_message() {
+  return "is a Git LFS pointer, not the layer: the checkout did not fetch the LFS content (`git lfs pull`, or "
+         "`lfs: true` in actions/checkout)";
+}
+
 FileKind usd_kind(std::string_view head) { return head.starts_with("#usda") ? FileKind::Usda : FileKind::BinaryUsd; }
 
 }  // namespace assetlint

@@ -16,6 +16,12 @@ FileKind file_kind(const std::string& path, std::string_view text);
 // A `.usd` file's kind by its first bytes: text layers start with `#usda`.
 FileKind usd_kind(std::string_view head);
 
+// A Git LFS pointer: the small text file git checks out in place of a large file when the LFS
+// content was not fetched (https://github.com/git-lfs/git-lfs/blob/main/docs/spec.md).
+bool is_lfs_pointer(std::string_view head);
+// The message for a layer or file that is one.
+std::string lfs_pointer_message();
+
 // The lower-case extension of `path`, with its dot ("" when none).
 std::string extension_of(const std::string& path);
 

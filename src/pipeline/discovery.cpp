@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 std::string head_of(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
-  char buffer[8] = {};
+  char buffer[48] = {};  // enough for a crate's magic and a Git LFS pointer's first line
   in.read(buffer, sizeof buffer);
   return std::string(buffer, static_cast<std::size_t>(in.gcount()));
 }
@@ -62,9 +62,11 @@ struct Walk {
       case FileKind::Usda: found.push_back(spelled(path, cwd)); break;
       case FileKind::Usd:
       case FileKind::BinaryUsd: {
-        // Text and crate layers are read; other binary USD (.usdz packages) is counted as skipped.
+        // Text and crate layers are read, and an LFS pointer is reported as one (the gate would
+        // otherwise check nothing); other binary USD (.usdz packages) is counted as skipped.
         const std::string head = head_of(path);
-        if (usd_kind(head) == FileKind::Usda || usdc::is_crate(head)) found.push_back(spelled(path, cwd));
+        if (usd_kind(head) == FileKind::Usda || usdc::is_crate(head) || is_lfs_pointer(head))
+          found.push_back(spelled(path, cwd));
         else out.binary_usd.push_back(spelled(path, cwd));
         break;
       }

@@ -64,6 +64,7 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 // The reader for `path` (text USD is told from binary by its first bytes), or why none.
 std::optional<std::string> kind_of(const std::string& path, std::string_view text, FileKind& kind) {
   kind = file_kind(path, text);
+  if (is_lfs_pointer(text)) return fmt::format("'{}' {}", path, lfs_pointer_message());
   if (kind == FileKind::Usd) kind = usd_kind(text);
   if (kind == FileKind::BinaryUsd && usdc::is_crate(text)) kind = FileKind::Usda;
   if (kind == FileKind::BinaryUsd)

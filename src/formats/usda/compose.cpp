@@ -8,6 +8,7 @@
 #include <set>
 #include <unordered_set>
 
+#include "formats/file_kind.h"
 #include "formats/usda/parser.h"
 #include "formats/usdc/crate_usda.h"
 #include "rules/reader_rules.h"
@@ -195,6 +196,8 @@ class Composer {
     if (usdc::is_crate(*text)) {
       source = usdc::crate_source(key, *text, error);
       if (!source) return {std::nullopt, "cannot be read; its opinions are skipped", Severity::Warning, error};
+    } else if (is_lfs_pointer(*text)) {
+      return {std::nullopt, lfs_pointer_message() + "; its opinions are skipped", Severity::Warning, {}};
     } else if (!starts_with_text_header(*text)) {
       return {std::nullopt, "is neither a USDA nor a crate layer; its opinions are skipped", Severity::Info, {}};
     } else {
