@@ -321,7 +321,10 @@ class Writer {
     metadata(fields, path, indent + 1, false, lines);
     if (default_value || !lines.empty() || (!samples && !connections)) {
       out_ += pad + head;
-      if (default_value) out_ += " = " + default_value->text;
+      if (default_value) {
+        out_ += " = ";
+        out_ += default_value->text;
+      }
       metadata_block(fields, path, indent);
       out_ += "\n";
     }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <cstring>
 
@@ -81,10 +82,17 @@ float half_to_float(std::uint16_t h) {
 }
 
 template <class F>
+void append_real(std::string& out, F v) {
+  if (std::isnan(v)) out += "nan";
+  else if (std::isinf(v)) out += v < 0 ? "-inf" : "inf";
+  else fmt::format_to(std::back_inserter(out), "{}", v);
+}
+
+template <class F>
 std::string real(F v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
-  return fmt::format("{}", v);
+  std::string out;
+  append_real(out, v);
+  return out;
 }
 
 template <class T>
@@ -180,43 +188,61 @@ bool ValueReader::is_list_op(ValueRep rep) const {
 namespace {
 
 // One component as USDA writes it.
-std::string component(const CrateFile& file, Num num, const char* p, const std::string& what) {
+// Appends one stored component as USDA writes it. Large arrays are millions of these: they are
+// formatted in place, without a string per component.
+void append_component(std::string& out, const CrateFile& file, Num num, const char* p, const std::string& what) {
+  const auto integer = [&](auto v) { fmt::format_to(std::back_inserter(out), "{}", v); };
   switch (num) {
-    case Num::Bool: return *p ? "1" : "0";
-    case Num::U8: return fmt::format("{}", load<std::uint8_t>(p));
-    case Num::I32: return fmt::format("{}", load<std::int32_t>(p));
-    case Num::U32: return fmt::format("{}", load<std::uint32_t>(p));
-    case Num::I64: return fmt::format("{}", load<std::int64_t>(p));
-    case Num::U64: return fmt::format("{}", load<std::uint64_t>(p));
-    case Num::Half: return real(half_to_float(load<std::uint16_t>(p)));
-    case Num::Float: return real(load<float>(p));
-    case Num::Double: return real(load<double>(p));
-    case Num::StringIdx: return quoted(file.string(load<std::uint32_t>(p), what.c_str()));
-    case Num::TokenIdx: return quoted(file.token(load<std::uint32_t>(p), what.c_str()));
-    case Num::AssetIdx: return asset_literal(file.string(load<std::uint32_t>(p), what.c_str()));
+    case Num::Bool: out += *p ? "1" : "0"; return;
+    case Num::U8: integer(load<std::uint8_t>(p)); return;
+    case Num::I32: integer(load<std::int32_t>(p)); return;
+    case Num::U32: integer(load<std::uint32_t>(p)); return;
+    case Num::I64: integer(load<std::int64_t>(p)); return;
+    case Num::U64: integer(load<std::uint64_t>(p)); return;
+    case Num::Half: append_real(out, half_to_float(load<std::uint16_t>(p))); return;
+    case Num::Float: append_real(out, load<float>(p)); return;
+    case Num::Double: append_real(out, load<double>(p)); return;
+    case Num::StringIdx: out += quoted(file.string(load<std::uint32_t>(p), what.c_str())); return;
+    case Num::TokenIdx: out += quoted(file.token(load<std::uint32_t>(p), what.c_str())); return;
+    case Num::AssetIdx: out += asset_literal(file.string(load<std::uint32_t>(p), what.c_str())); return;
   }
-  return {};
 }
 
 // A whole element (scalar, vector, quaternion, matrix) from its stored components.
-std::string element_text(const CrateFile& file, const Element& e, const char* p, const std::string& what) {
+void append_element(std::string& out, const CrateFile& file, const Element& e, const char* p, const std::string& what) {
   const std::size_t size = size_of(e.num);
-  if (e.components == 1) return component(file, e.num, p, what);
-  std::vector<std::string> parts;
-  for (int i = 0; i < e.components; ++i) parts.push_back(component(file, e.num, p + static_cast<std::size_t>(i) * size, what));
-  if (e.quat) std::rotate(parts.begin(), parts.begin() + 3, parts.end());  // x y z w -> w x y z
+  if (e.components == 1) {
+    append_component(out, file, e.num, p, what);
+    return;
+  }
+  // Crate stores a quaternion x, y, z, w; USDA writes w first.
+  const auto stored = [&](int i) {
+    const int index = e.quat ? (i + 3) % 4 : i;
+    return p + static_cast<std::size_t>(index) * size;
+  };
+  out += '(';
   if (e.rows) {
-    std::string out = "(";
     for (int r = 0; r < e.rows; ++r) {
       out += r ? ", (" : "(";
-      for (int k = 0; k < e.rows; ++k) out += (k ? ", " : "") + parts[static_cast<std::size_t>(r * e.rows + k)];
-      out += ")";
+      for (int k = 0; k < e.rows; ++k) {
+        if (k) out += ", ";
+        append_component(out, file, e.num, stored(r * e.rows + k), what);
+      }
+      out += ')';
     }
-    return out + ")";
+  } else {
+    for (int i = 0; i < e.components; ++i) {
+      if (i) out += ", ";
+      append_component(out, file, e.num, stored(i), what);
+    }
   }
-  std::string out = "(";
-  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? ", " : "") + parts[i];
-  return out + ")";
+  out += ')';
+}
+
+std::string element_text(const CrateFile& file, const Element& e, const char* p, const std::string& what) {
+  std::string out;
+  append_element(out, file, e, p, what);
+  return out;
 }
 
 }  // namespace
@@ -423,9 +449,10 @@ Literal ValueReader::array(ValueRep rep, const std::string& what) {
   out.reserve(n * 8 + 2);
   for (std::size_t i = 0; i < n; ++i) {
     if (i) out += ", ";
-    out += element_text(file_, *e, data.data() + i * element_bytes, what);
+    append_element(out, file_, *e, data.data() + i * element_bytes, what);
   }
-  return {type, out + "]"};
+  out += ']';
+  return {type, std::move(out)};
 }
 
 std::string ValueReader::dictionary(Cursor& c, const std::string& what, int indent) {
