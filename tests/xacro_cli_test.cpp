@@ -116,3 +116,42 @@ TEST_CASE("xacro CLI: a value computed by an expression is never rewritten, and 
   CHECK(run.out.find("No fix through xacro: the value is computed by '${40 + 7}'; asset-lint does not rewrite expressions") !=
         std::string::npos);
 }
+
+TEST_CASE("xacro CLI: a value from a property is fixed at the property's definition when every use gets the fix",
+          "[xacro][cli][fix]") {
+  test::TempDir dir;
+  const fs::path package = copy_package(dir);
+  const fs::path macro = package / "urdf" / "demo_gripper_macro.xacro";
+  std::string source = test::replace_once(test::read_file(macro), "upper=\"47\"", "upper=\"${knuckle_upper}\"");
+  source = test::replace_once(source, "  <xacro:property name=\"knuckle_effort\" value=\"24\"/>",
+                              "  <xacro:property name=\"knuckle_effort\" value=\"24\"/>\n"
+                              "  <xacro:property name=\"knuckle_upper\" value=\"47\"/>");
+  test::write_file(macro, source);
+  const auto run = test::run_cli({"urdf/demo_gripper.urdf.xacro"}, package);
+  CHECK(run.out.find("the value of property 'knuckle_upper', defined at") != std::string::npos);
+
+  test::run_cli({"--fix", "--unsafe-fixes", "urdf/demo_gripper.urdf.xacro"}, package);
+  // Both fingers use the property and both get the same fix: the definition is rewritten, once.
+  CHECK(test::read_file(macro) ==
+        test::replace_once(source, "name=\"knuckle_upper\" value=\"47\"", "name=\"knuckle_upper\" value=\"0.820305\""));
+  const auto relint = test::run_cli({"urdf/demo_gripper.urdf.xacro"}, package);
+  CHECK(relint.out.find("units-angle-degrees") == std::string::npos);
+}
+
+TEST_CASE("xacro CLI: a property whose other uses need no fix is left alone, and the finding says why",
+          "[xacro][cli][fix]") {
+  test::TempDir dir;
+  const fs::path package = copy_package(dir);
+  const fs::path macro = package / "urdf" / "demo_gripper_macro.xacro";
+  std::string source = test::replace_once(test::read_file(macro), "upper=\"47\"", "upper=\"${knuckle_upper}\"");
+  source = test::replace_once(source, "effort=\"${knuckle_effort}\"", "effort=\"${knuckle_upper}\"");
+  source = test::replace_once(source, "  <xacro:property name=\"knuckle_effort\" value=\"24\"/>",
+                              "  <xacro:property name=\"knuckle_effort\" value=\"24\"/>\n"
+                              "  <xacro:property name=\"knuckle_upper\" value=\"47\"/>");
+  test::write_file(macro, source);
+  const auto run = test::run_cli({"--unsafe-fixes", "urdf/demo_gripper.urdf.xacro"}, package);
+  CHECK(run.out.find("No fix through xacro: property 'knuckle_upper' is used 4 times and not every use gets this fix") !=
+        std::string::npos);
+  test::run_cli({"--fix", "--unsafe-fixes", "urdf/demo_gripper.urdf.xacro"}, package);
+  CHECK(test::read_file(macro) == source);
+}
