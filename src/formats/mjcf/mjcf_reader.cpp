@@ -195,36 +195,58 @@ class Reader {
     return fmt::format("(unnamed body at line {})", values_.element_span(el).line);
   }
 
-  void read_bodies(const XMLElement* parent_el, const std::string& parent, const std::string& childclass) {
+  // The class an element's children default to: its `childclass`, else the one around it.
+  std::string child_class(const XMLElement* el, const std::string& around) {
+    const char* c = el->Attribute("childclass");
+    if (!c) return around;
+    if (defaults_.has_class(c)) return c;
+    values_.error(values_.value_span(own(el, "childclass"), "childclass"), fmt::format("unknown default class '{}'", c));
+    return around;
+  }
+
+  // The bodies under `parent_el`, directly or through <frame>s: a frame only places what it
+  // holds (its pose composes onto theirs, its childclass becomes their default class) and
+  // leaves no body of its own (MuJoCo's compiler folds it away).
+  void read_bodies(const XMLElement* parent_el, const std::string& parent, const std::string& childclass,
+                   const Eigen::Isometry3d& frame = Eigen::Isometry3d::Identity()) {
     for (const XMLElement* el : sources_.children(parent_el)) {
-      if (std::string_view(el->Name()) != "body") continue;
-      std::string cls = childclass;
-      if (const char* c = el->Attribute("childclass")) {
-        if (!defaults_.has_class(c))
-          values_.error(values_.value_span(own(el, "childclass"), "childclass"), fmt::format("unknown default class '{}'", c));
-        else cls = c;
-      }
-      read_body(el, parent, cls);
+      const std::string_view tag = el->Name();
+      if (tag == "body") read_body(el, parent, child_class(el, childclass), frame);
+      else if (tag == "frame") read_bodies(el, parent, child_class(el, childclass), frame * pose(el, compiler_, values_));
     }
   }
 
-  void read_body(const XMLElement* el, const std::string& parent, const std::string& cls) {
+  // A geom and where it sits: the class it defaults to and the frames between it and its body.
+  struct PlacedGeom {
+    const XMLElement* element;
+    std::string cls;
+    Eigen::Isometry3d frame;
+  };
+
+  void collect_geoms(const XMLElement* parent_el, const std::string& cls, const Eigen::Isometry3d& frame,
+                     std::vector<PlacedGeom>& out) {
+    for (const XMLElement* c : sources_.children(parent_el)) {
+      const std::string_view tag = c->Name();
+      if (tag == "geom") out.push_back({c, cls, frame});
+      else if (tag == "frame") collect_geoms(c, child_class(c, cls), frame * pose(c, compiler_, values_), out);
+    }
+  }
+
+  void read_body(const XMLElement* el, const std::string& parent, const std::string& cls, const Eigen::Isometry3d& frame) {
     Link link;
     link.name = Name{body_name(el), el->Attribute("name") ? values_.value_span(own(el, "name"), "name") : values_.element_span(el)};
     link.span = values_.element_span(el);
-    const Eigen::Isometry3d body_pose = pose(el, compiler_, values_);
+    const Eigen::Isometry3d body_pose = frame * pose(el, compiler_, values_);
     std::size_t joints = 0;
-    std::vector<const XMLElement*> geoms;
-    bool frames = false;
     for (const XMLElement* c : sources_.children(el)) {
       const std::string_view tag = c->Name();
       if (tag == "inertial") read_inertial(c, link);
       else if (tag == "joint" || tag == "freejoint") joints += read_joint(c, link.name.text, parent, body_pose, cls);
-      else if (tag == "geom") geoms.push_back(c);
-      else if (tag == "frame") frames = true;
     }
+    std::vector<PlacedGeom> geoms;
+    collect_geoms(el, cls, Eigen::Isometry3d::Identity(), geoms);
     // Without <inertial> (or when the compiler ignores it) MuJoCo sums the geoms' mass and inertia.
-    if (!link.inertial && compiler_.inertiafromgeom != "false") inertia_from_geoms(link, geoms, frames, cls);
+    if (!link.inertial && compiler_.inertiafromgeom != "false") inertia_from_geoms(link, geoms);
     if (joints == 0) {
       Joint weld;
       weld.name = Name{link.name.text + " (welded)", link.name.span};
@@ -269,10 +291,10 @@ class Reader {
     }
   }
 
-  void inertia_from_geoms(Link& link, const std::vector<const XMLElement*>& geoms, bool frames, const std::string& cls) {
+  void inertia_from_geoms(Link& link, const std::vector<PlacedGeom>& geoms) {
     std::vector<physics::MassPart> parts;
-    bool unknown = frames;  // geoms placed through a <frame> are not read
-    for (const XMLElement* g : geoms) {
+    bool unknown = false;
+    for (const auto& [g, cls, frame] : geoms) {
       const auto geom_class = class_of(g, cls);
       if (!geom_class) return;
       const auto& defs = defaults_.elements(*geom_class, "geom");
@@ -280,8 +302,14 @@ class Reader {
       if (auto v = values_.numbers(Defaults::lookup(g, defs, "group"), "group", 1)) group = static_cast<int>((*v)[0]);
       if (group < compiler_.inertia_group_low || group > compiler_.inertia_group_high) continue;
       const GeomMass mass = geom_mass(g, defs, compiler_, values_);
-      if (!mass.unknown.empty()) unknown = true;
-      else if (mass.part) parts.push_back(*mass.part);
+      if (!mass.unknown.empty()) {
+        unknown = true;
+      } else if (mass.part) {
+        physics::MassPart part = *mass.part;  // in the frame that holds the geom
+        part.com = frame * part.com;
+        part.inertia = frame.linear() * part.inertia * frame.linear().transpose();
+        parts.push_back(part);
+      }
     }
     if (unknown) {
       link.mass_from_geoms = true;
