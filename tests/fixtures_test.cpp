@@ -95,7 +95,11 @@ TEST_CASE("every primary message is short, the numbers go in notes", "[fixtures]
     for (const Diagnostic& d : lint_fixture(file).diagnostics) {
       ++checked;
       INFO(file.string() << ": [" << d.rule << "] " << d.message);
-      const auto characters = std::count_if(d.message.begin(), d.message.end(),
+      // A finding of another USD variant selection starts with it ("in variant PhysX=Enabled: "):
+      // the rule's own message follows.
+      std::string_view message = d.message;
+      if (message.starts_with("in variant")) message.remove_prefix(message.find(": ") + 2);
+      const auto characters = std::count_if(message.begin(), message.end(),
                                             [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
       CHECK(static_cast<std::size_t>(characters) <= kMaxPrimaryMessage);
     }

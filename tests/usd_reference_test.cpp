@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,6 +49,75 @@ struct Reference {
   std::string skipped;  // why, when skipped
 };
 
+// A variant selection of a fixture, composed by OpenUSD through a wrapper layer that sublayers
+// the fixture and selects the variant on every prim that has the set.
+struct VariantCase {
+  std::filesystem::path asset;
+  std::string set, variant;
+  std::filesystem::path wrapper;
+};
+
+std::string quoted_prim_path(const std::string& path, const std::string& body) {
+  // "/a/b" -> over "a" { over "b" (...) { } }
+  std::vector<std::string> names;
+  for (std::size_t at = 1; at <= path.size();) {
+    const std::size_t next = std::min(path.find('/', at), path.size());
+    names.push_back(path.substr(at, next - at));
+    at = next + 1;
+  }
+  std::string open, close;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    open += fmt::format("over \"{}\"{}\n{{\n", names[i], i + 1 == names.size() ? body : "");
+    close += "}\n";
+  }
+  return open + close;
+}
+
+// The wrapper layers of every variant of every set the fixtures' stages compose, written into
+// `dir` (one directory for the test process).
+const std::vector<VariantCase>& variant_cases() {
+  static const assetlint::test::TempDir dir;
+  static const std::vector<VariantCase> cases = [] {
+    std::vector<VariantCase> out;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(fixtures_dir())) {
+      if (!entry.is_regular_file() || entry.path().extension() != ".usda") continue;
+      const auto path = std::filesystem::weakly_canonical(entry.path());
+      usda::ComposeOptions options;
+      options.root_dir = std::filesystem::weakly_canonical(fixtures_dir()).string();
+      const usda::Stage stage = usda::compose_stage(
+          std::make_shared<const assetlint::SourceFile>(path.string(), read_file(path)), assetlint::disk(), options);
+      if (!stage.usable || stage.variant_sets.empty()) continue;
+      std::string units;
+      if (const auto* root = stage.root_layer()) {
+        if (auto mpu = root->meters_per_unit()) units += fmt::format("    metersPerUnit = {}\n", *mpu);
+        if (auto kpu = root->kilograms_per_unit()) units += fmt::format("    kilogramsPerUnit = {}\n", *kpu);
+      }
+      std::vector<std::pair<std::string, std::string>> seen;
+      for (const auto& use : stage.variant_sets) {
+        for (const auto& variant : use.variants) {
+          if (std::find(seen.begin(), seen.end(), std::pair{use.set, variant}) != seen.end()) continue;
+          seen.emplace_back(use.set, variant);
+          std::string text = fmt::format("#usda 1.0\n(\n{}    subLayers = [\n        @{}@\n    ]\n)\n\n", units,
+                                         path.string());
+          const std::string body =
+              fmt::format(" (\n    variants = {{\n        string {} = \"{}\"\n    }}\n)", use.set, variant);
+          for (const auto& other : stage.variant_sets)
+            if (other.set == use.set) text += quoted_prim_path(other.prim, body);
+          VariantCase c{path, use.set, variant, dir.path() / fmt::format("variant_{}.usda", out.size())};
+          assetlint::test::write_file(c.wrapper, text);
+          out.push_back(std::move(c));
+        }
+      }
+    }
+    return out;
+  }();
+  return cases;
+}
+
+std::filesystem::path variant_dir() {
+  return variant_cases().empty() ? std::filesystem::path() : variant_cases().front().wrapper.parent_path();
+}
+
 // Runs the flattening script once per test process.
 const Reference& reference() {
   static const Reference result = [] {
@@ -67,6 +137,7 @@ const Reference& reference() {
                           shell_quote((source_dir() / "tests" / "usd_reference" / "flatten.mjs").string()) + " " +
                           shell_quote(package.string()) + " " + shell_quote(fixtures_dir().string());
     if (!corpus_dir().empty()) command += " " + shell_quote((corpus_dir() / "usda").string());
+    if (!variant_dir().empty()) command += " " + shell_quote(variant_dir().string());
     command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
     const int status = std::system(command.c_str());
     // The tools are there, so a failure is a real one, not a reason to skip.
@@ -344,6 +415,7 @@ TEST_CASE("usd reference: asset-lint composes every USDA stack as OpenUSD 22.11 
   for (const auto& stage : json["stages"]) {
     // Canonical like the trees: ../shared may be a symbolic link (it is one in CI's checkout).
     const std::filesystem::path path = std::filesystem::weakly_canonical(stage["path"].get<std::string>());
+    if (!variant_dir().empty() && path.parent_path() == std::filesystem::weakly_canonical(variant_dir())) continue;
     const Tree* tree = nullptr;
     for (const Tree& t : trees)
       if (path.string().rfind(t.dir.string() + "/", 0) == 0) tree = &t;
@@ -376,6 +448,45 @@ TEST_CASE("usd reference: asset-lint composes every USDA stack as OpenUSD 22.11 
   CHECK(found.empty());
   CHECK(stages >= 60);
   CHECK(joints > 100);
+}
+
+TEST_CASE("usd reference: asset-lint composes every variant selection of the fixtures as OpenUSD 22.11 does",
+          "[usd][openusd][variants]") {
+  // OpenUSD opens a layer that sublayers the fixture and selects one variant; asset-lint composes
+  // that layer, and the fixture itself with the selection pinned (--variant): all three agree.
+  if (skip_without_openusd()) return;
+  std::map<std::string, const nlohmann::json*> flattened;
+  for (const auto& stage : reference().json["stages"])
+    flattened[std::filesystem::weakly_canonical(stage["path"].get<std::string>()).string()] = &stage;
+  std::size_t compared = 0, with_joints = 0;
+  std::set<std::string> sets;
+  for (const VariantCase& c : variant_cases()) {
+    const std::string label = fmt::format("{} {}={}", std::filesystem::relative(c.asset, fixtures_dir()).string(), c.set, c.variant);
+    INFO(label);
+    const auto it = flattened.find(std::filesystem::weakly_canonical(c.wrapper).string());
+    REQUIRE(it != flattened.end());
+    REQUIRE_FALSE((*it->second)["flattened"].is_null());
+    usda::ComposeOptions pinned;
+    pinned.root_dir = std::filesystem::weakly_canonical(fixtures_dir()).string();
+    pinned.pinned_variants[c.set] = c.variant;
+    Reading ours_pinned = read(usda::compose_stage(
+        std::make_shared<const assetlint::SourceFile>(c.asset.string(), read_file(c.asset)), assetlint::disk(), pinned));
+    usda::ComposeOptions anywhere;
+    anywhere.allow_outside_root = true;
+    Reading ours_wrapped = read(usda::compose_stage(
+        std::make_shared<const assetlint::SourceFile>(c.wrapper.string(), read_file(c.wrapper)), assetlint::disk(), anywhere));
+    const std::string text = (*it->second)["flattened"].get<std::string>();
+    Reading theirs = read_flattened(c.wrapper.string(), with_kilograms_per_unit(text, ours_pinned.kilograms_per_unit));
+    for (const auto& line : differences(label + " (pinned)", ours_pinned, theirs)) FAIL_CHECK(line);
+    for (const auto& line : differences(label + " (wrapper layer)", ours_wrapped, theirs)) FAIL_CHECK(line);
+    ++compared;
+    sets.insert(c.set);
+    if (!ours_pinned.result.asset.joints.empty()) ++with_joints;
+  }
+  INFO(compared << " variant selections compared, " << with_joints << " with joints");
+  CHECK(compared >= 8);
+  CHECK(with_joints >= 4);
+  CHECK(sets.count("PhysX") == 1);
 }
 
 TEST_CASE("usd reference: every deliberate exception still happens", "[usd][openusd]") {

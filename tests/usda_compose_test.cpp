@@ -295,3 +295,94 @@ TEST_CASE("compose: the selected variant's opinions are weaker than the prim's, 
   CHECK_FALSE(scene.find("/S")->has_api_schema("PhysicsArticulationRootAPI"));
   CHECK(number(scene, "/S", "x") == 1);
 }
+
+TEST_CASE("compose: a variant's payload is stronger than the prim's own references", "[usd][compose][variants]") {
+  // LIVRPS: the variant node and what it brings in come before the prim's references.
+  MemoryFileSystem fs({{"asset.usda", "#usda 1.0\n(\n defaultPrim = \"R\"\n)\n"
+                                      "def Xform \"R\" (\n references = @base.usda@\n"
+                                      " variants = {\n string PhysX = \"Enabled\"\n }\n"
+                                      " prepend variantSets = \"PhysX\"\n)\n{\n"
+                                      " variantSet \"PhysX\" = {\n  \"Disabled\" {\n  }\n"
+                                      "  \"Enabled\" (\n prepend payload = @physx.usda@\n  ) {\n  }\n }\n}\n"},
+                       {"base.usda", "#usda 1.0\n(\n defaultPrim = \"B\"\n)\ndef Xform \"B\"\n{\n float k = 1\n}\n"},
+                       {"physx.usda", "#usda 1.0\n(\n defaultPrim = \"P\"\n)\nover \"P\"\n{\n float k = 2\n}\n"}});
+  Stage s = compose(fs, "asset.usda");
+  REQUIRE(s.usable);
+  CHECK(number(s, "/R", "k") == 2);
+  REQUIRE(s.variant_sets.size() == 1);
+  CHECK(s.variant_sets[0].prim == "/R");
+  CHECK(s.variant_sets[0].set == "PhysX");
+  CHECK(s.variant_sets[0].variants == std::vector<std::string>{"Disabled", "Enabled"});
+  CHECK(s.variant_sets[0].selection == "Enabled");
+  CHECK_FALSE(s.variant_sets[0].physics);  // `k` is no physics attribute
+
+  ComposeOptions pinned;
+  pinned.pinned_variants["PhysX"] = "Disabled";
+  Stage off = compose(fs, "asset.usda", pinned);
+  CHECK(number(off, "/R", "k") == 1);
+  CHECK(off.variant_sets[0].pinned);
+  CHECK(off.variant_sets[0].selection == "Disabled");
+}
+
+TEST_CASE("compose: variantSets is list-edited; a set it does not name is not composed", "[usd][compose][variants]") {
+  MemoryFileSystem fs({{"a.usda", "#usda 1.0\n(\n subLayers = [@b.usda@]\n)\n"
+                                  "over \"R\" (\n delete variantSets = \"Old\"\n)\n{\n}\n"},
+                       {"b.usda", "#usda 1.0\ndef Xform \"R\" (\n"
+                                  " variants = {\n string New = \"on\"\n string Old = \"on\"\n string Unlisted = \"on\"\n }\n"
+                                  " prepend variantSets = [\"Old\", \"New\"]\n)\n{\n"
+                                  " variantSet \"Old\" = {\n  \"on\" {\n   float old = 1\n  }\n }\n"
+                                  " variantSet \"New\" = {\n  \"on\" {\n   float physics:mass = 2\n  }\n }\n"
+                                  " variantSet \"Unlisted\" = {\n  \"on\" {\n   float unlisted = 3\n  }\n }\n}\n"}});
+  Stage s = compose(fs, "a.usda");
+  REQUIRE(s.usable);
+  const ComposedPrim* r = s.find("/R");
+  CHECK_FALSE(r->attribute("old"));
+  CHECK_FALSE(r->attribute("unlisted"));
+  CHECK(number(s, "/R", "physics:mass") == 2);
+  REQUIRE(s.variant_sets.size() == 1);
+  CHECK(s.variant_sets[0].set == "New");
+  CHECK(s.variant_sets[0].physics);
+}
+
+TEST_CASE("compose: nested variant sets, and a selection authored inside a variant", "[usd][compose][variants]") {
+  MemoryFileSystem fs(std::map<std::string, std::string>{{"a.usda", "#usda 1.0\ndef Xform \"R\" (\n"
+                                  " variants = {\n string Engine = \"physx\"\n }\n"
+                                  " prepend variantSets = \"Engine\"\n)\n{\n"
+                                  " variantSet \"Engine\" = {\n"
+                                  "  \"none\" {\n  }\n"
+                                  "  \"physx\" (\n variants = {\n string Gains = \"stiff\"\n }\n"
+                                  "   prepend variantSets = \"Gains\"\n  ) {\n"
+                                  "   float k = 1\n"
+                                  "   variantSet \"Gains\" = {\n"
+                                  "    \"soft\" {\n     float drive:angular:physics:stiffness = 4.8\n    }\n"
+                                  "    \"stiff\" {\n     float drive:angular:physics:stiffness = 99.48\n    }\n   }\n"
+                                  "  }\n }\n}\n"}});
+  Stage s = compose(fs, "a.usda");
+  REQUIRE(s.usable);
+  CHECK(number(s, "/R", "k") == 1);
+  CHECK(number(s, "/R", "drive:angular:physics:stiffness") == 99.48);
+  REQUIRE(s.variant_sets.size() == 2);
+  CHECK(s.variant_sets[0].set == "Engine");
+  CHECK(s.variant_sets[1].set == "Gains");
+  CHECK(s.variant_sets[1].parent == 0);
+  CHECK(s.variant_sets[1].physics);
+  CHECK(s.variant_sets[0].physics);  // through the set nested in it
+
+  ComposeOptions soft;
+  soft.pinned_variants["Gains"] = "soft";
+  CHECK(number(compose(fs, "a.usda", soft), "/R", "drive:angular:physics:stiffness") == 4.8);
+}
+
+TEST_CASE("compose: the strongest layer's variant selection wins", "[usd][compose][variants]") {
+  MemoryFileSystem fs({{"stage.usda", "#usda 1.0\n(\n subLayers = [@asset.usda@]\n)\n"
+                                      "over \"R\" (\n variants = {\n string PhysX = \"Enabled\"\n }\n)\n{\n}\n"},
+                       {"asset.usda", "#usda 1.0\ndef Xform \"R\" (\n variants = {\n string PhysX = \"Disabled\"\n }\n"
+                                      " prepend variantSets = \"PhysX\"\n)\n{\n"
+                                      " variantSet \"PhysX\" = {\n  \"Disabled\" {\n  }\n"
+                                      "  \"Enabled\" {\n   def PhysicsRevoluteJoint \"J\"\n   {\n   }\n  }\n }\n}\n"}});
+  Stage s = compose(fs, "stage.usda");
+  REQUIRE(s.find("/R/J") != nullptr);
+  CHECK(s.variant_sets.at(0).selection == "Enabled");
+  CHECK(s.variant_sets.at(0).physics);  // a child prim of the variant
+  CHECK(compose(fs, "asset.usda").find("/R/J") == nullptr);
+}

@@ -59,7 +59,9 @@ int show_settings(const std::string& file, config::SettingsResolver& resolver, s
   }
   const Settings& settings = resolver.for_file(path);
   std::string tree = config::checked_root(path, settings);
-  write_settings(out, path, settings, resolver.file_selection_for(path), tree.empty() ? "the file's directory" : tree);
+  const std::optional<VariantRun> variants = plan_variants(path, settings);
+  write_settings(out, path, settings, resolver.file_selection_for(path), tree.empty() ? "the file's directory" : tree,
+                 variants ? &*variants : nullptr);
   return kExitClean;
 }
 

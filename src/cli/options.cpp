@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "commands/command_input.h"
 #include "rules/registry.h"
 
 namespace assetlint::cli {
@@ -70,6 +71,11 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--allow-outside-root", o.allow_outside_root, "Let USD composition read layers outside the checked tree");
   app.add_option("--xacro-arg", o.xacro_args, "A xacro argument's value, name:=value (repeatable; wins over [xacro] args)")
       ->check([](const std::string& s) { return s.find(":=") == std::string::npos ? "expected name:=value" : std::string(); });
+  app.add_option("--variant", o.variants,
+                 "Check USD variant set SET in variant NAME only, SET=NAME (repeatable; wins over [usd] variants; "
+                 "default: the stage's selection and every variant that carries physics)")
+      ->check(commands::check_variant_choice)
+      ->allow_extra_args(false);
   app.add_option("--max-file-size", o.max_file_mib,
                  "Files and layers larger than this many MiB are not read (an error names them; default 512)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 20));
@@ -195,6 +201,7 @@ config::CommandLineOverrides overrides_from(const Options& o) {
     const auto at = arg.find(":=");
     overrides.xacro_args.emplace_back(arg.substr(0, at), arg.substr(at + 2));
   }
+  for (const auto& v : o.variants) overrides.variants.push_back(*commands::variant_choice(v));
   overrides.root = o.root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : o.paths)

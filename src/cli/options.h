@@ -30,6 +30,7 @@ struct Options {
   std::string baseline, write_baseline;  // --baseline FILE, --write-baseline FILE
   bool allow_outside_root = false;
   std::vector<std::string> xacro_args;  // --xacro-arg name:=value
+  std::vector<std::string> variants;    // --variant SET=NAME
   std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read
   std::string root;  // --root
   std::optional<double> timesteps_per_second;

@@ -44,6 +44,21 @@ void add_scope_options(CLI::App& app, CompositionScope& scope) {
                  "directory of its asset-lint.toml)")
       ->check(CLI::ExistingDirectory);
   app.add_flag("--allow-outside-root", scope.allow_outside_root, "Let USD composition read layers outside that tree");
+  app.add_option("--variant", scope.variants,
+                 "Select this variant in every USD variant set of that name, SET=NAME (repeatable; wins over "
+                 "[usd] variants and the stage's own selection)")
+      ->check(check_variant_choice)
+      ->allow_extra_args(false);
+}
+
+std::optional<std::pair<std::string, std::string>> variant_choice(const std::string& text) {
+  const auto at = text.find('=');
+  if (at == std::string::npos || at == 0 || at + 1 == text.size()) return std::nullopt;
+  return std::pair{text.substr(0, at), text.substr(at + 1)};
+}
+
+std::string check_variant_choice(const std::string& text) {
+  return variant_choice(text) ? std::string() : "expected SET=NAME (a variant set and one of its variants)";
 }
 
 CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
@@ -58,6 +73,7 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
   overrides.trees.push_back(std::filesystem::current_path(ec).string());
   overrides.root = scope.root;
   overrides.allow_outside_root = scope.allow_outside_root;
+  for (const auto& v : scope.variants) overrides.variants.push_back(*variant_choice(v));
   config::SettingsResolver resolver(overrides, config);
   if (auto problem = resolver.prepare({path})) {
     result.error = problem->to_string();

@@ -39,6 +39,7 @@ struct CommandAsset {
 struct CompositionScope {
   std::string root;  // empty: the file's git work tree, else its asset-lint.toml's directory
   bool allow_outside_root = false;
+  std::vector<std::string> variants;  // --variant SET=NAME
 };
 CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
                                 const CompositionScope& scope = {});
@@ -46,12 +47,17 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
 // Writes a report file (--plot, --csv); false with `error` naming the path when it cannot.
 bool write_text_file(const std::string& path, const std::string& text, std::string& error);
 
-// Adds --root and --allow-outside-root to a command.
+// Adds --root, --allow-outside-root and --variant to a command.
 void add_scope_options(CLI::App& app, CompositionScope& scope);
 
 // The rate, iterations and solver a command steps at: the asset's (stage, then
 // configuration, then PhysX defaults), except that values given on the command line
 // (origin "--rate", "--position-iterations", "--solver") win over the stage too.
+// --variant SET=NAME: the set and the variant; nullopt when the text is not of that form.
+std::optional<std::pair<std::string, std::string>> variant_choice(const std::string& text);
+// The check CLI11 runs on each --variant.
+std::string check_variant_choice(const std::string& text);
+
 physics::SimulationRate command_rate(const Asset& asset, const Settings& settings);
 
 }  // namespace assetlint::commands

@@ -35,6 +35,7 @@ class Loader {
       else if (name == "drives") drives(table(node, name));
       else if (name == "rules") rules(table(node, name));
       else if (name == "xacro") xacro(table(node, name));
+      else if (name == "usd") usd(table(node, name));
       else unknown(key, "");
     }
     // After the loop: `extend-select` adds to `select` wherever the two stand in the file.
@@ -168,6 +169,19 @@ class Loader {
         if (files_) files_->xacro_entry_points = std::move(paths);
       } else {
         unknown(key, "xacro");
+      }
+    }
+  }
+
+  // [usd] variants = { PhysX = "Enabled" }
+  void usd(const toml::table& t) {
+    for (const auto& [key, node] : t) {
+      if (key.str() != "variants") unknown(key, "usd");
+      for (const auto& [set, value] : table(node, "variants")) {
+        if (set.str().empty()) fail(value, "[usd] variants: a variant set name is empty");
+        const std::string variant = string(value, fmt::format("variants.{}", set.str()));
+        if (variant.empty()) fail(value, fmt::format("[usd] variants: the variant of '{}' is empty", set.str()));
+        settings_.usd.variants[std::string(set.str())] = Configured<std::string>{variant, origin(value)};
       }
     }
   }

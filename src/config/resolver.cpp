@@ -22,6 +22,7 @@ const Settings& SettingsResolver::load(const std::string& config_path, std::opti
   settings->root = overrides_.root;
   settings->allow_outside_root = overrides_.allow_outside_root;
   for (const auto& [name, value] : overrides_.xacro_args) settings->xacro.args[name] = Configured<std::string>{value, "--xacro-arg"};
+  for (const auto& [set, variant] : overrides_.variants) settings->usd.variants[set] = Configured<std::string>{variant, "--variant"};
   return *by_config_.emplace(config_path, std::move(settings)).first->second;
 }
 

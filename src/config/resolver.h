@@ -26,6 +26,7 @@ struct CommandLineOverrides {
   std::string root;                // --root: the checked tree for every file
   bool allow_outside_root = false;
   std::vector<std::pair<std::string, std::string>> xacro_args;  // --xacro-arg name:=value
+  std::vector<std::pair<std::string, std::string>> variants;    // --variant SET=NAME
   FileSelectionOverrides files;     // --exclude, --extend-exclude, --no-respect-gitignore, --force-exclude
   std::string working_directory;    // what command-line exclude globs are relative to
 };

@@ -89,9 +89,16 @@ struct XacroSettings {
   std::map<std::string, Configured<std::string>, std::less<>> args;
 };
 
+// [usd] and --variant: variant selections that replace the authored ones when a stage is
+// composed (set name -> variant name); such a set is checked in that selection only.
+struct UsdSettings {
+  std::map<std::string, Configured<std::string>, std::less<>> variants;
+};
+
 struct Settings {
   RuleSelection selection;
   XacroSettings xacro;
+  UsdSettings usd;
   std::vector<PerFileIgnore> per_file_ignores;
   SimulationSettings simulation;
   GripperSpec gripper;

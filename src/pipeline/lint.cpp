@@ -23,6 +23,7 @@
 #include "pipeline/binary_layer_fixes.h"
 #include "pipeline/inherited_fixes.h"
 #include "pipeline/suppressions.h"
+#include "pipeline/variant_checks.h"
 #include "rules/reader_rules.h"
 #include "rules/registry.h"
 
@@ -36,6 +37,12 @@ xacro::XacroOptions xacro_options(const std::string& path, const Settings& setti
   return options;
 }
 
+usda::ComposeOptions compose_options(const std::string& path, const Settings& settings) {
+  usda::ComposeOptions options{config::checked_root(path, settings), settings.allow_outside_root, {}};
+  for (const auto& [set, variant] : settings.usd.variants) options.pinned_variants[set] = variant.value;
+  return options;
+}
+
 ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const SourceFile> file,
                 const FileSystem& files, const Settings& settings) {
   switch (kind) {
@@ -44,8 +51,7 @@ ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const So
       return mjcf::read_mjcf(std::move(file), files,
                              mjcf::ReadOptions{config::checked_root(path, settings), settings.allow_outside_root});
     case FileKind::Usda:
-      return usda::read_usda(std::move(file), files,
-                             usda::ComposeOptions{config::checked_root(path, settings), settings.allow_outside_root});
+      return usda::read_usda(std::move(file), files, compose_options(path, settings));
     case FileKind::Xacro: return xacro::read_xacro(std::move(file), files, xacro_options(path, settings));
     default: break;
   }
@@ -84,6 +90,26 @@ std::shared_ptr<const SourceFile> source_of(const std::string& path, std::string
   return std::make_shared<const SourceFile>(path, std::move(text));
 }
 
+// The reader's findings the selection keeps, then the rules' (when the model is usable).
+std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std::set<FileId>& unparsable) {
+  std::vector<Diagnostic> diagnostics;
+  for (auto& d : result.diagnostics) {
+    if (d.rule == rules::kParseError.id) unparsable.insert(d.span.file == kNoFile ? 0 : d.span.file);
+    if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
+  }
+  if (!result.usable) return diagnostics;
+  config::apply_drive_settings(result.asset, settings);
+  const physics::SharedArticulationScope shared_articulation(result.asset);
+  for (const Rule* rule : rules::checks()) {
+    if (!settings.selection.enabled(rule->info().id)) continue;
+    Reporter reporter(rule->info(), diagnostics);
+    rule->check(result.asset, settings, reporter);
+  }
+  withhold_fixes_on_shared_literals(result.asset, diagnostics);
+  withhold_fixes_in_binary_layers(result.asset.sources, diagnostics);
+  return diagnostics;
+}
+
 }  // namespace
 
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
@@ -97,23 +123,20 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   auto file = source_of(path, std::move(text), report.error.emplace());
   if (!file) return report;
   report.error.reset();
-  ReadResult result = read(path, kind, std::move(file), files, settings);
-  std::vector<Diagnostic> diagnostics;
   std::set<FileId> unparsable;
-  for (auto& d : result.diagnostics) {
-    if (d.rule == rules::kParseError.id) unparsable.insert(d.span.file == kNoFile ? 0 : d.span.file);
-    if (settings.selection.enabled(d.rule)) diagnostics.push_back(std::move(d));
-  }
-  if (result.usable) {
-    config::apply_drive_settings(result.asset, settings);
-    const physics::SharedArticulationScope shared_articulation(result.asset);
-    for (const Rule* rule : rules::checks()) {
-      if (!settings.selection.enabled(rule->info().id)) continue;
-      Reporter reporter(rule->info(), diagnostics);
-      rule->check(result.asset, settings, reporter);
-    }
-    withhold_fixes_on_shared_literals(result.asset, diagnostics);
-    withhold_fixes_in_binary_layers(result.asset.sources, diagnostics);
+  ReadResult result;
+  std::vector<Diagnostic> diagnostics;
+  if (kind == FileKind::Usda) {
+    const usda::ComposeOptions options = compose_options(path, settings);
+    usda::Stage stage = usda::compose_stage(file, files, options);
+    const std::vector<usda::VariantSetUse> sets = stage.variant_sets;
+    result = usda::read_stage(std::move(stage));
+    diagnostics = check(result, settings, unparsable);
+    const StageCheck check_variant = [&](ReadResult& read, std::set<FileId>& broken) { return check(read, settings, broken); };
+    check_physics_variants(file, files, options, sets, check_variant, result.asset.sources, diagnostics, unparsable);
+  } else {
+    result = read(path, kind, std::move(file), files, settings);
+    diagnostics = check(result, settings, unparsable);
   }
   if (result.relocate) result.asset.sources = result.relocate(diagnostics);
   for (auto& d : diagnostics) {
@@ -176,6 +199,16 @@ LoadedAsset load_asset(const std::string& path, const Settings& settings, const 
   loaded.read = read(path, kind, std::move(file), files, settings);
   if (loaded.read.usable) config::apply_drive_settings(loaded.read.asset, settings);
   return loaded;
+}
+
+std::optional<VariantRun> plan_variants(const std::string& path, const Settings& settings, const FileSystem& files) {
+  std::string error;
+  std::optional<std::string> text = files.read(path, error);
+  FileKind kind;
+  if (!text || kind_of(path, *text, kind) || kind != FileKind::Usda) return std::nullopt;
+  auto file = source_of(path, std::move(*text), error);
+  if (!file) return std::nullopt;
+  return plan_physics_variants(file, files, compose_options(path, settings));
 }
 
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs) {

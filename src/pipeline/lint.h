@@ -11,6 +11,7 @@
 #include "engine/file_system.h"
 #include "engine/settings.h"
 #include "formats/read_result.h"
+#include "pipeline/variant_checks.h"
 #include "model/source.h"
 
 namespace assetlint {
@@ -28,6 +29,11 @@ struct FileReport {
 // running the rules; nullopt with `error` set when it cannot be read or is not a model.
 std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
                                      const FileSystem& files = disk());
+
+// The variant sets of a USD file and the selections a check of it composes and checks
+// (variant_checks.h); nullopt for a file that is not USD or cannot be read.
+std::optional<VariantRun> plan_variants(const std::string& path, const Settings& settings,
+                                        const FileSystem& files = disk());
 
 // Reads and lints one file (through `files`, the disk by default).
 FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files = disk());

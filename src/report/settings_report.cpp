@@ -37,8 +37,44 @@ void number(std::ostream& out, const char* key, const std::optional<Configured<d
 
 }  // namespace
 
+namespace {
+
+// Shown for a USD file, or when variants are pinned.
+void write_usd(std::ostream& out, const std::string& file, const Settings& settings, const VariantRun* run) {
+  if (!run && settings.usd.variants.empty()) return;
+  out << "\n[usd]\n";
+  if (settings.usd.variants.empty()) {
+    out << "# variants is not set: the stage's selections, and every variant that carries physics\n";
+  } else {
+    std::vector<std::string> pins, where;
+    for (const auto& [set, variant] : settings.usd.variants) {
+      pins.push_back(fmt::format("{} = \"{}\"", set, variant.value));
+      where.push_back(variant.origin);
+    }
+    line(out, fmt::format("variants = {{ {} }}", fmt::join(pins, ", ")), fmt::format("{}", fmt::join(where, ", ")));
+  }
+  if (!run) return;
+  if (run->sets.empty()) {
+    out << fmt::format("# {} has no variant sets\n", file);
+    return;
+  }
+  out << fmt::format("# variant sets of {}:\n", file);
+  for (const auto& use : run->sets) {
+    std::vector<std::string> variants;
+    for (const auto& v : use.variants) variants.push_back(fmt::format("\"{}\"", v));
+    out << fmt::format("#   <{}> {} = [{}], {} \"{}\"\n", use.prim, use.set, fmt::join(variants, ", "),
+                       use.pinned ? "pinned to" : "selects", use.selection);
+  }
+  out << fmt::format("# checked: the stage's selection{}{}\n", run->checked.empty() ? "" : ", ",
+                     fmt::join(run->checked, ", "));
+  if (!run->without_physics.empty())
+    out << fmt::format("# not checked, no physics in them: {}\n", fmt::join(run->without_physics, ", "));
+}
+
+}  // namespace
+
 void write_settings(std::ostream& out, const std::string& file, const Settings& settings,
-                    const config::FileSelection& files, const std::string& checked_tree) {
+                    const config::FileSelection& files, const std::string& checked_tree, const VariantRun* variants) {
   out << fmt::format("# Settings for {}\n", file);
   out << fmt::format("# configuration: {}\n", settings.config_path.empty() ? "none (defaults)" : settings.config_path);
   out << fmt::format("# checked tree (USD composition reads inside it): {}\n\n", checked_tree);
@@ -98,6 +134,8 @@ void write_settings(std::ostream& out, const std::string& file, const Settings& 
       if (*value) line(out, fmt::format("{} = {}", key, format_number((*value)->value)), (*value)->origin);
     if (drive.type) line(out, fmt::format("type = \"{}\"", drive.type->value), drive.type->origin);
   }
+
+  write_usd(out, file, settings, variants);
 
   if (!settings.per_file_ignores.empty()) {
     out << "\n[per-file-ignores]\n";

@@ -6,10 +6,13 @@
 
 #include "config/file_selection.h"
 #include "engine/settings.h"
+#include "pipeline/variant_checks.h"
 
 namespace assetlint {
 
+// `variants`: the file's USD variant sets and the selections a check looks at (null: not USD).
 void write_settings(std::ostream& out, const std::string& file, const Settings& settings,
-                    const config::FileSelection& files, const std::string& checked_tree);
+                    const config::FileSelection& files, const std::string& checked_tree,
+                    const VariantRun* variants = nullptr);
 
 }  // namespace assetlint

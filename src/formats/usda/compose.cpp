@@ -83,8 +83,36 @@ std::string map_path(std::string_view authored, const SpecRef& spec) {
   return std::string(authored);
 }
 
-// Variant set name -> selected variant name.
-using Selections = std::map<std::string, std::string, std::less<>>;
+using Selections = VariantSelections;
+
+bool physics_name(std::string_view name) {
+  for (std::string_view prefix : {"physics:", "physx", "drive:", "newton:", "mjc:"})
+    if (name.starts_with(prefix)) return true;
+  return false;
+}
+
+bool physics_schema(std::string_view schema) {
+  for (std::string_view prefix : {"Physics", "Physx", "Newton", "Mjc"})
+    if (schema.starts_with(prefix)) return true;
+  return false;
+}
+
+// The spec's own opinions (not its children's) say something a physics engine reads.
+bool authors_physics(const Prim& prim) {
+  if (physics_schema(prim.type_name)) return true;
+  for (const Metadata& m : prim.metadata) {
+    if (m.key != "apiSchemas") continue;
+    if (auto items = m.value.as_string_list())
+      for (std::string_view item : *items)
+        if (physics_schema(item)) return true;
+  }
+  for (const Attribute& a : prim.attributes)
+    if (physics_name(a.name)) return true;
+  for (const Relationship& r : prim.relationships)
+    if (physics_name(r.name)) return true;
+  return false;
+}
+constexpr std::size_t kNoVariant = static_cast<std::size_t>(-1);
 
 struct Arc {
   CompositionArc arc;
@@ -111,10 +139,21 @@ class Composer {
       if (stage_.layers[id]) containers.push_back({&stage_.layers[id]->prims, SpecRef{id, nullptr, 0, {}, {}}});
     std::vector<const Prim*> active;
     stage_.roots = compose_level(containers, "", static_cast<std::size_t>(-1), active, 0);
+    mark_physics_variants();
     return std::move(stage_);
   }
 
  private:
+  // A selected variant carries physics when a spec it contributes (on any prim) does.
+  void mark_physics_variants() {
+    for (const ComposedPrim& prim : stage_.prims)
+      for (const SpecRef& s : prim.specs) {
+        if (s.variant == kNoVariant || stage_.variant_sets[s.variant].physics || !authors_physics(*s.prim)) continue;
+        for (std::size_t use = s.variant; use != kNoVariant; use = stage_.variant_sets[use].parent)
+          stage_.variant_sets[use].physics = true;
+      }
+  }
+
   struct Loaded {
     std::optional<FileId> id;
     std::string problem;  // why it was not read
@@ -264,43 +303,70 @@ class Composer {
     return all;
   }
 
-  // The variant selections (`variants = { string set = "name" }`) of specs[0..count), strongest
-  // first; selections already made by stronger (referencing) prims win.
-  static void add_selections(const std::vector<SpecRef>& specs, std::size_t count, Selections& selections) {
-    for (std::size_t i = 0; i < count; ++i)
-      for (const Metadata& m : specs[i].prim->metadata) {
+  // The strongest `variants` selection of each set among `specs` (strongest first), after the pins.
+  Selections selections_of(const std::vector<SpecRef>& specs) const {
+    Selections out = options_.pinned_variants;
+    for (const SpecRef& s : specs)
+      for (const Metadata& m : s.prim->metadata) {
         if (m.key != "variants") continue;
         for (const DictEntry& e : m.value.entries)
-          if (auto name = e.value.as_string()) selections.try_emplace(e.key, std::string(*name));
+          if (auto name = e.value.as_string()) out.try_emplace(e.key, std::string(*name));
       }
+    return out;
   }
 
-  // Appends the selected variant of every variant set specs[0..count) define: in USD's strength
-  // order a variant is weaker than its layer stack's own opinions and stronger than the
-  // references and payloads (which the variant may itself author).
-  static void add_variants(std::vector<SpecRef>& specs, std::size_t count, const Selections& selections) {
-    for (std::size_t i = 0; i < count; ++i)
-      for (const VariantSet& set : specs[i].prim->variant_sets) {
-        auto selected = selections.find(set.name);
-        if (selected == selections.end()) continue;
-        if (const Variant* variant = set.find_variant(selected->second)) {
-          SpecRef spec = specs[i];
-          spec.prim = &variant->body;
-          specs.push_back(std::move(spec));
+  // The variant set names a node's layer stack lists (`variantSets`, list-edited, weakest applied first).
+  static std::vector<std::string> variant_set_names(const std::vector<SpecRef>& node) {
+    std::vector<std::string> out;
+    for (std::size_t i = node.size(); i-- > 0;) {
+      SpecListOps<std::string> ops;
+      bool any = false;
+      for (const Metadata& m : node[i].prim->metadata) {
+        if (m.key != "variantSets") continue;
+        auto items = m.value.as_string_list();
+        if (!items) continue;
+        any = true;
+        add_items(ops, m.op, std::vector<std::string>(items->begin(), items->end()));
+      }
+      if (any) apply_ops(out, ops, [](const std::string& x) -> const std::string& { return x; });
+    }
+    return out;
+  }
+
+  // Appends one node of the prim index and what lies under it, strongest first: the node's
+  // specs, its selected variants (in `variantSets` order, each with its own subtree), then
+  // the targets of its references and payloads.
+  void add_node(const std::vector<SpecRef>& node, const std::string& path, std::vector<const Prim*>& active,
+                const Selections& selections, std::vector<SpecRef>& out, std::vector<VariantSetUse>& uses) {
+    if (node.empty() || active.size() > 400) return;
+    out.insert(out.end(), node.begin(), node.end());
+    for (const std::string& set : variant_set_names(node)) {
+      VariantSetUse use;
+      use.prim = path;
+      use.set = set;
+      use.parent = node.front().variant;
+      auto selected = selections.find(set);
+      if (selected != selections.end()) use.selection = selected->second;
+      use.pinned = options_.pinned_variants.count(set) > 0;
+      std::vector<SpecRef> bodies;
+      for (const SpecRef& s : node)
+        for (const VariantSet& vs : s.prim->variant_sets) {
+          if (vs.name != set) continue;
+          if (!use.span.valid()) use.span = vs.name_span;
+          for (const Variant& v : vs.variants)
+            if (std::find(use.variants.begin(), use.variants.end(), v.name) == use.variants.end())
+              use.variants.push_back(v.name);
+          if (const Variant* v = use.selection.empty() ? nullptr : vs.find_variant(use.selection)) {
+            SpecRef body = s;
+            body.prim = &v->body;
+            body.variant = first_use_ + uses.size();
+            bodies.push_back(std::move(body));
+          }
         }
-      }
-  }
-
-  // Appends the selected variants of specs[0..] and the specs that their arcs bring in,
-  // strongest first (recursively).
-  void expand(std::vector<SpecRef>& specs, const std::string& path, std::vector<const Prim*>& active,
-              Selections selections = {}) {
-    add_selections(specs, specs.size(), selections);
-    add_variants(specs, specs.size(), selections);
-    const std::size_t count = specs.size();
-    const std::vector<Arc> arcs = arcs_of(specs, count);
-    std::vector<SpecRef> added;
-    for (const Arc& a : arcs) {
+      uses.push_back(std::move(use));
+      add_node(bodies, path, active, selections, out, uses);
+    }
+    for (const Arc& a : arcs_of(node, node.size())) {
       const SpecRef& owner = *a.owner;
       std::optional<FileId> target;
       if (a.arc.asset.empty()) {
@@ -323,7 +389,8 @@ class Composer {
       std::vector<SpecRef> targets;
       for (FileId l : stack(*target)) {
         if (!stage_.layers[l]) continue;
-        if (const Prim* p = stage_.layers[l]->find_prim(target_path)) targets.push_back({l, p, *target, target_path, path});
+        if (const Prim* p = stage_.layers[l]->find_prim(target_path))
+          targets.push_back({l, p, *target, target_path, path, owner.variant});
       }
       if (targets.empty()) {
         report(a.arc.span, Severity::Info,
@@ -347,11 +414,30 @@ class Composer {
       }
       const std::size_t before = active.size();
       for (const SpecRef& t : targets) active.push_back(t.prim);
-      expand(targets, path, active, selections);  // appends the targets' variants and arcs to `targets`
+      add_node(targets, path, active, selections, out, uses);
       active.resize(before);
-      added.insert(added.end(), targets.begin(), targets.end());
     }
-    specs.insert(specs.end(), added.begin(), added.end());
+  }
+
+  // Replaces `specs` (the prim's specs in the stage's layer stack) by the prim's whole index,
+  // strongest first. A selection may be authored anywhere in the index, also in a layer that
+  // a variant brings in: the index is rebuilt until the selections it holds are the ones it
+  // was built with.
+  void expand(std::vector<SpecRef>& specs, const std::string& path, std::vector<const Prim*>& active) {
+    first_use_ = stage_.variant_sets.size();
+    Selections selections = options_.pinned_variants;
+    std::vector<SpecRef> out;
+    std::vector<VariantSetUse> uses;
+    for (int round = 0; round < 8; ++round) {
+      out.clear();
+      uses.clear();
+      add_node(specs, path, active, selections, out, uses);
+      Selections found = selections_of(out);
+      if (found == selections) break;
+      selections = std::move(found);
+    }
+    for (VariantSetUse& use : uses) stage_.variant_sets.push_back(std::move(use));
+    specs = std::move(out);
   }
 
   std::vector<std::size_t> compose_level(const std::vector<Container>& containers, const std::string& parent_path,
@@ -435,6 +521,7 @@ class Composer {
   std::unordered_map<std::string, Loaded> by_path_;
   std::unordered_map<FileId, std::vector<FileId>> stacks_;
   std::set<std::pair<FileId, std::size_t>> reported_;
+  std::size_t first_use_ = 0;  // Stage::variant_sets index of the first set of the prim being expanded
 };
 
 }  // namespace

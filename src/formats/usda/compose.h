@@ -11,8 +11,14 @@
 //
 // Every layer read becomes a SourceFile (Stage::sources, FileId = index, [0] the root), so
 // spans of the AST nodes a ComposedPrim hands out point into the layer that authored them.
+// Variant sets compose as USD's LIVRPS order says: the sets a prim's layer stack lists in
+// `variantSets` (list-edited), each selected by the strongest `variants` opinion of the prim's
+// whole index (or pinned), weaker than the layer stack's own opinions and stronger than its
+// references and payloads; a variant's arcs and nested sets sit under it.
+//
 // Layers that are missing, binary, or outside the allowed directory tree are skipped with
 // a `layer-unresolved` note at the asset path; cycles are reported (warning) and cut.
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,10 +33,30 @@
 
 namespace assetlint::usda {
 
+// Variant set name -> variant name.
+using VariantSelections = std::map<std::string, std::string, std::less<>>;
+
 struct ComposeOptions {
   // Layers outside this directory tree are not read. Empty: the root layer's directory.
   std::string root_dir;
   bool allow_outside_root = false;
+  // Selections that replace the authored ones, for every prim with a variant set of that
+  // name (a stronger layer selecting them on every such prim would do the same).
+  VariantSelections pinned_variants;
+};
+
+// A variant set on a composed prim, and the variant this composition selected in it.
+struct VariantSetUse {
+  std::string prim;                   // "/gripper"
+  std::string set;                    // "PhysX"
+  std::vector<std::string> variants;  // the variant names its layers define, first seen first
+  std::string selection;              // "" when none is selected (or pinned)
+  bool pinned = false;                // the selection comes from ComposeOptions::pinned_variants
+  // The selected variant's opinions (its body, its descendants' and what its arcs bring
+  // in) author physics: a Physics* prim type, a physics API schema or attribute.
+  bool physics = false;
+  Span span;                                          // the strongest `variantSet` name
+  std::size_t parent = static_cast<std::size_t>(-1);  // the variant that holds this set (nested)
 };
 
 // One prim spec that contributes opinions to a composed prim.
@@ -42,6 +68,8 @@ struct SpecRef {
   // (a referenced prim's relationship targets). Both empty: identity.
   std::string source_root;
   std::string target_root;
+  // The innermost selected variant (Stage::variant_sets) whose opinions this spec is part of.
+  std::size_t variant = static_cast<std::size_t>(-1);
 };
 
 struct AttributeOpinion {
@@ -97,6 +125,7 @@ struct Stage {
     std::string scope;
   };
   std::vector<SkippedArc> skipped;
+  std::vector<VariantSetUse> variant_sets;  // every variant set on the stage, in composition order
   bool usable = true;                                      // false: a layer has a syntax error
 
   const ComposedPrim* find(std::string_view path) const;
