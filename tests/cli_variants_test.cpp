@@ -108,3 +108,23 @@ TEST_CASE("cli variants: a directory run judges the payload layers once, in the 
   CHECK(occurrences(r.out, "in 4 files") == 0);  // concise has no summary
   CHECK(r.exit_code == 1);
 }
+
+TEST_CASE("cli variants: a variant's fix edits the payload layer it lives in", "[cli][usd][variants][fix]") {
+  auto r = run_cli({"--diff", "--unsafe-fixes", kGripper}, assetlint::test::fixtures_dir());
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(occurrences(r.out, "+++ b/usda/variants/simready/runnables/physics/physx.usda") == 1);
+  CHECK(occurrences(r.out, "-        float drive:angular:physics:stiffness = 99.48") == 1);
+  CHECK(occurrences(r.out, "+        float drive:angular:physics:stiffness = 4.8") == 1);
+  CHECK(occurrences(r.out, "gripper.usda\n") == 0);  // the root layer is not touched
+}
+
+TEST_CASE("cli variants: tune reads the stage in the selection --variant names", "[cli][usd][variants]") {
+  const auto fixtures = assetlint::test::fixtures_dir();
+  auto off = run_cli({"tune", kGripper}, fixtures);
+  CHECK(off.exit_code == 2);
+  CHECK(occurrences(off.err, "no driven joint") == 1);
+  auto on = run_cli({"tune", "--variant", "PhysX=Enabled", kGripper}, fixtures);
+  INFO(on.out << on.err);
+  CHECK(occurrences(on.out, "Tuning revolute joint '/gripper/finger_joint'") == 1);
+}
