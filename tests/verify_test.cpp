@@ -11,11 +11,14 @@
 #include <filesystem>
 
 #include "test_support.h"
+#include "verify_support.h"
 
 using assetlint::test::read_file;
 using assetlint::test::replace_once;
 using assetlint::test::run_cli;
 using assetlint::test::write_file;
+using assetlint::test::check_two_finger_holds;
+using assetlint::test::check_two_finger_slips;
 
 namespace {
 
@@ -37,11 +40,7 @@ struct TwoFinger {
 };
 
 const nlohmann::json& scene(const nlohmann::json& report, const std::string& kind, int nth = 0) {
-  for (const auto& s : report["scenes"])
-    if (s["kind"] == kind && nth-- == 0) return s;
-  FAIL("no scene " << kind);
-  static nlohmann::json none;
-  return none;
+  return assetlint::test::verify_scene(report, kind, nth);
 }
 
 }  // namespace
@@ -57,31 +56,7 @@ TEST_CASE("verify: twice the required squeeze holds at every width and the close
   CHECK(report["engine"]["name"] == "mujoco");
   CHECK(report["engine"]["timestep_s"].get<double>() == Approx(0.001));  // 250 Hz / 4 position iterations
   CHECK(report["engine"]["cone"] == "elliptic");
-  REQUIRE(report["scenes"].size() == 8);
-  // Close: 45 mm per finger at 0.1 m/s is 0.45 s; the target ramps at the 0.1 m/s max velocity.
-  const auto& close = scene(report, "close");
-  CHECK(close["object"].is_null());
-  CHECK(close["metrics"]["spec_close_time_s"].get<double>() == Approx(0.45));
-  CHECK(close["metrics"]["close_time_s"].get<double>() == Approx(0.45).epsilon(0.05));
-  // The boxes: met at 10 % and 50 % of the 45 mm stroke and at the guide's 0.01 m (5 mm before closed):
-  // gaps 90 − 2·4.5 = 81 mm, 90 − 2·22.5 = 45 mm and 10 mm.
-  CHECK(scene(report, "grasp", 0)["object"]["width_m"].get<double>() == Approx(0.081));
-  CHECK(scene(report, "grasp", 1)["object"]["width_m"].get<double>() == Approx(0.045));
-  CHECK(scene(report, "grasp", 2)["object"]["width_m"].get<double>() == Approx(0.010));
-  for (int i = 0; i < 3; ++i) {
-    const auto& grasp = scene(report, "grasp", i)["metrics"];
-    CHECK(grasp["required_grip_force_n"].get<double>() == Approx(10.0));
-    // The spring is past its 20 N max force at the two wider boxes; at the 10 mm box it is k·Δ = 4000 N/m × 5 mm
-    // = 20 N less the sub-millimetre penetration.
-    CHECK(grasp["grip_force_n"].get<double>() == Approx(20.0).epsilon(0.05));
-    CHECK(grasp["peak_penetration_m"].get<double>() < 0.002);
-    CHECK(grasp["mimic_error_max"].get<double>() < 1e-3);
-    const auto& hold = scene(report, "hold", i)["metrics"];
-    CHECK(hold["slip_m"].get<double>() < 0.005);
-    CHECK(hold["diverged"] == false);
-  }
-  CHECK(scene(report, "lift")["passed"] == true);
-  CHECK(scene(report, "lift")["metrics"]["slip_m"].get<double>() < 0.005);
+  check_two_finger_holds(report);
 }
 
 TEST_CASE("verify: half the required squeeze slips and fails", "[verify]") {
@@ -96,16 +71,7 @@ TEST_CASE("verify: half the required squeeze slips and fails", "[verify]") {
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 1);
   const auto report = nlohmann::json::parse(r.out);
-  CHECK(report["passed"] == false);
-  for (int i = 0; i < 3; ++i) {
-    const auto& hold = scene(report, "hold", i);
-    CHECK(hold["passed"] == false);
-    CHECK(hold["metrics"]["slip_m"].get<double>() > 0.005);
-    const auto& grasp = scene(report, "grasp", i);
-    CHECK(grasp["metrics"]["grip_force_n"].get<double>() == Approx(5.0).epsilon(0.05));
-    CHECK(grasp["failures"][0].get<std::string>().find("grip force") != std::string::npos);
-  }
-  CHECK(scene(report, "lift")["passed"] == false);
+  check_two_finger_slips(report);
 }
 
 TEST_CASE("verify: a too-stiff undamped drive at a coarse step fails", "[verify]") {

@@ -62,7 +62,7 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   std::string path, format = "text", engine_name = "mujoco";
   std::optional<std::string> config, plot;
   bool fine_tune = false, apply = false;
-  app.add_option("asset", path, "The gripper: a .urdf file")->required();
+  app.add_option("asset", path, "The gripper: a URDF, USD (.usda, .usd, .usdc) or MJCF file")->required();
   app.add_option("--engine", engine_name, "The engine that steps the scenes: mujoco (MuJoCo 2.2.2)")
       ->check(CLI::IsMember({"mujoco"}));
   app.add_option("--output-format", format, "text or json")->check(CLI::IsMember({"text", "json"}));
@@ -84,10 +84,6 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (input.error) return fail(*input.error);
   const Settings& settings = input.settings;
   const Asset& asset = input.loaded.read.asset;
-  if (asset.format != SourceFormat::Urdf)
-    return fail(fmt::format("{}: verify reads URDF grippers (collision boxes, cylinders, spheres and STL, OBJ or "
-                            "Collada meshes)",
-                            path));
   std::string error;
   const Joint* joint = tune_joint(asset, settings, std::nullopt, error);
   if (!joint) return fail(fmt::format("{}: {}", path, error));
@@ -111,6 +107,9 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (!points) return fail(fmt::format("{}: {}", path, error));
     plan.meshes[filename] = std::move(*points);
   }
+  for (const Link& link : asset.links)
+    for (const CollisionShape& shape : link.collisions)
+      if (shape.kind == CollisionShape::Kind::Mesh && !shape.points.empty()) plan.meshes[shape.mesh] = shape.points;
   auto layout = verify::gripper_layout(asset, *joint, error);
   if (!layout) return fail(fmt::format("{}: {}", path, error));
   plan.layout = std::move(*layout);
@@ -158,7 +157,7 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
                                        : std::string("unbounded"),
                   plan.drive.max_velocity
                       ? fmt::format("{} {}/s ({})", format_number(*plan.drive.max_velocity, 4), angular ? "rad" : "m",
-                                    origin_of(asset, *joint->velocity, std::nullopt))
+                                    origin_of(asset, *joint->velocity, table ? table->max_velocity : std::nullopt))
                       : std::string("unbounded")),
       fmt::format("step: {}; the engine steps h = {} s and samples every frame ({} s)", plan.timestep_origin,
                   format_number(plan.timestep, 4), format_number(plan.frame, 4)),

@@ -246,6 +246,7 @@ class Loader {
         else if (k == "damping") drive.damping = non_negative(value, k);
         else if (k == "armature") drive.armature = non_negative(value, k);
         else if (k == "max_force") drive.max_force = non_negative(value, k);
+        else if (k == "max_velocity") drive.max_velocity = positive(value, k);
         else if (k == "rotor_inertia") drive.rotor_inertia = non_negative(value, k);
         else if (k == "gear_ratio") drive.gear_ratio = positive(value, k);
         else if (k == "type") drive.type = Configured<std::string>{choice(value, k, {"force", "acceleration"}), origin(value)};

@@ -26,6 +26,8 @@ void apply_drive_settings(Asset& asset, const Settings& settings) {
     if (!drive.damping)
       drive.damping = configured(config.damping, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter);
     if (!drive.max_force) drive.max_force = configured(config.max_force, angular ? Unit::NewtonMeter : Unit::Newton);
+    if (!joint.velocity)
+      joint.velocity = configured(config.max_velocity, angular ? Unit::RadianPerSecond : Unit::MeterPerSecond);
     if (config.type && !drive.type_span.valid())
       drive.type = config.type->value == "acceleration" ? DriveType::Acceleration : DriveType::Force;
     if (!joint.armature) joint.armature = configured(config.armature, angular ? Unit::KilogramMeter2 : Unit::Kilogram);

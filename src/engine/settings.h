@@ -70,6 +70,7 @@ struct DriveSettings {
   std::optional<Configured<double>> damping;
   std::optional<Configured<double>> armature;
   std::optional<Configured<double>> max_force;
+  std::optional<Configured<double>> max_velocity;   // PhysX's max joint velocity, rad/s (m/s)
   std::optional<Configured<double>> rotor_inertia;  // motor datasheet, kg·m²: justifies armature
   std::optional<Configured<double>> gear_ratio;
   std::optional<Configured<std::string>> type;  // "force" or "acceleration"

@@ -56,8 +56,12 @@ struct CollisionShape {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // in the link frame
   // Box: full edge lengths; cylinder and capsule: (radius, length along z, 0); sphere: (radius, 0, 0).
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
-  std::string mesh;                                   // mesh file as written (URDF filename), for Kind::Mesh
+  // Kind::Mesh: the file as written (URDF filename; MJCF file with meshdir applied), or, for
+  // a mesh the asset writes inline (USD `points`, MJCF `vertex`), a name unique in the asset
+  // (the prim path, the mesh asset's name) with the vertices in `points`.
+  std::string mesh;
   Eigen::Vector3d mesh_scale = Eigen::Vector3d::Ones();
+  std::vector<Eigen::Vector3d> points;  // inline vertices in the shape frame, m (scale applied); empty for a file
   Span span;
 };
 

@@ -129,7 +129,8 @@ void write_settings(std::ostream& out, const std::string& file, const Settings& 
     out << fmt::format("\n[drives.{}]  # {}\n", joint, drive.origin);
     const std::pair<const char*, const std::optional<Configured<double>>*> values[] = {
         {"stiffness", &drive.stiffness}, {"damping", &drive.damping},       {"armature", &drive.armature},
-        {"max_force", &drive.max_force}, {"rotor_inertia", &drive.rotor_inertia}, {"gear_ratio", &drive.gear_ratio}};
+        {"max_force", &drive.max_force}, {"max_velocity", &drive.max_velocity},
+        {"rotor_inertia", &drive.rotor_inertia}, {"gear_ratio", &drive.gear_ratio}};
     for (const auto& [key, value] : values)
       if (*value) line(out, fmt::format("{} = {}", key, format_number((*value)->value)), (*value)->origin);
     if (drive.type) line(out, fmt::format("type = \"{}\"", drive.type->value), drive.type->origin);

@@ -126,7 +126,8 @@ std::vector<std::string> collision_meshes(const Asset& asset, const std::vector<
   for (const auto& name : links)
     if (const Link* link = asset.find_link(name))
       for (const CollisionShape& shape : link->collisions)
-        if (shape.kind == CollisionShape::Kind::Mesh && std::find(files.begin(), files.end(), shape.mesh) == files.end())
+        if (shape.kind == CollisionShape::Kind::Mesh && shape.points.empty() &&
+            std::find(files.begin(), files.end(), shape.mesh) == files.end())
           files.push_back(shape.mesh);
   return files;
 }
@@ -175,11 +176,26 @@ std::optional<GripperLayout> gripper_layout(const Asset& asset, const Joint& dri
   for (const auto& name : layout.moving_links)
     if (const Link* l = asset.find_link(name); l && !l->collisions.empty()) shaped.push_back(l);
   if (shaped.empty()) {
-    error = fmt::format("no collision geometry on the fingers: the links joint '{}' moves ({}) have no <collision> "
-                        "(or collider); verify needs the shapes the fingers grasp with",
+    error = fmt::format("no collision geometry on the fingers: the links joint '{}' moves ({}) have no collision "
+                        "shapes (URDF <collision>, USD prims with PhysicsCollisionAPI, MJCF geoms that collide); "
+                        "verify needs the shapes the fingers grasp with",
                         driven.name.text, quoted_list(layout.moving_links));
     return std::nullopt;
   }
+
+  // One side with shapes and links without any: the bare links are the other finger.
+  std::vector<std::string> bare, with_shapes;
+  for (const auto& name : layout.moving_links)
+    if (const Link* l = asset.find_link(name); l && l->collisions.empty()) bare.push_back(name);
+  for (const Link* l : shaped) with_shapes.push_back(l->name.text);
+  const auto bare_finger = [&] {
+    if (bare.empty()) return false;
+    error = fmt::format("no collision geometry on a finger: {} (moved by joint '{}') {} no collision shapes, so only "
+                        "{} can close on an object; verify needs the shapes both fingers grasp with",
+                        quoted_list(bare), driven.name.text, bare.size() == 1 ? "has" : "have",
+                        quoted_list(with_shapes));
+    return true;
+  };
 
   layout.open = driven.lower->value;
   layout.closed = driven.upper->value;
@@ -198,6 +214,7 @@ std::optional<GripperLayout> gripper_layout(const Asset& asset, const Joint& dri
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(spread);
   Eigen::Vector3d axis = eigen.eigenvectors().col(2);
   if (!(eigen.eigenvalues()(2) > 1e-16)) {
+    if (bare_finger()) return std::nullopt;
     error = fmt::format("the links joint '{}' moves ({}) do not move toward each other over its range: verify needs "
                         "two fingers that close on each other",
                         driven.name.text, quoted_list(layout.moving_links));
@@ -210,6 +227,7 @@ std::optional<GripperLayout> gripper_layout(const Asset& asset, const Joint& dri
   std::array<std::vector<const Link*>, 2> sides;
   for (std::size_t i = 0; i < shaped.size(); ++i) sides[(moves[i] - mean).dot(axis) > 0 ? 0 : 1].push_back(shaped[i]);
   if (sides[0].empty() || sides[1].empty()) {
+    if (bare_finger()) return std::nullopt;
     error = fmt::format("the links joint '{}' moves ({}) all move one way: verify needs two fingers that close on "
                         "each other",
                         driven.name.text, quoted_list(layout.moving_links));

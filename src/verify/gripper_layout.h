@@ -20,7 +20,8 @@ struct Extent {
 };
 
 // The points of a mesh shape, in the mesh file's frame (scale not applied); the shape's
-// mesh name indexes them. Filled by the caller for meshes (verify/mesh_points.h).
+// mesh name indexes them. Filled by the caller: from mesh files (formats/mesh/mesh_points.h)
+// and from the shapes' inline points.
 using MeshPoints = std::map<std::string, std::vector<Eigen::Vector3d>, std::less<>>;
 
 // Support of one shape posed at `pose` (its link's pose) along unit direction `u`.
@@ -61,7 +62,8 @@ struct GripperLayout {
 std::optional<GripperLayout> gripper_layout(const Asset& asset, const Joint& driven,
                                             std::string& error);
 
-// Every mesh file named by a collision shape of `links` (in first-use order).
+// Every mesh file named by a collision shape of `links` (in first-use order); inline meshes
+// (CollisionShape::points) are not files and not listed.
 std::vector<std::string> collision_meshes(const Asset& asset, const std::vector<std::string>& links);
 
 }  // namespace assetlint::verify

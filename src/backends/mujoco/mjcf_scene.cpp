@@ -33,7 +33,9 @@ class Writer {
     const double mu = scene_.object ? scene_.object->friction : 1.0;
     out_ += "<mujoco model=\"asset-lint verify\">\n";
     out_ += "  <compiler angle=\"radian\" inertiafromgeom=\"auto\"/>\n";
-    out_ += fmt::format("  <option timestep=\"{}\" integrator=\"{}\" cone=\"{}\" impratio=\"{}\" gravity=\"0 0 0\"/>\n",
+    // multiccd: a flat convex (mesh) face on a box touches in several points, not one it pivots about.
+    out_ += fmt::format("  <option timestep=\"{}\" integrator=\"{}\" cone=\"{}\" impratio=\"{}\" gravity=\"0 0 0\">"
+                        "<flag multiccd=\"enable\"/></option>\n",
                         num(h), kIntegrator, kCone, num(kImpratio));
     out_ += "  <size njmax=\"1000\" nconmax=\"300\" nstack=\"2000000\"/>\n";
     out_ += "  <default>\n";

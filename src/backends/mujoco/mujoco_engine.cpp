@@ -107,8 +107,9 @@ verify::EngineInfo MujocoEngine::info(const VerifyPlan& plan) const {
                         plan.layout.mimics.size(), format_number(2 * plan.timestep, 3)),
       fmt::format("Contact: elliptic friction cone and impratio {} (MuJoCo's pyramidal cone and impratio 1 let a "
                   "squeezed box creep out); solref time constant {} s (two steps) and solimp 0.95 0.99 for "
-                  "sub-millimetre penetration; the spec's μ on the object and on every gripper geom, because MuJoCo "
-                  "takes the larger of the two and defaults to 1.",
+                  "sub-millimetre penetration; multiccd, so a flat mesh face rests on the box in several points; the "
+                  "spec's μ on the object and on every gripper geom, because MuJoCo takes the larger of the two and "
+                  "defaults to 1.",
                   format_number(kImpratio), format_number(2 * plan.timestep, 3)),
       shape_mass_note(plan),
       fmt::format("Mount: the base link rides a {} kg free body welded to a kinematic (mocap) mount that lifts it; the "

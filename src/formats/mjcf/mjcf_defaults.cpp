@@ -13,6 +13,7 @@ std::string_view default_kind(std::string_view element) {
   if (element == "equality") return "equality";
   if (element == "geom") return "geom";
   if (element == "tendon" || element == "fixed" || element == "spatial") return "tendon";
+  if (element == "mesh") return "mesh";
   if (element == "general" || element == "motor" || element == "position" || element == "velocity" ||
       element == "intvelocity" || element == "damper" || element == "cylinder" || element == "muscle" ||
       element == "adhesion")

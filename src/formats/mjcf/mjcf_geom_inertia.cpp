@@ -37,15 +37,14 @@ bool complete(const physics::SolidShape& shape) {
 
 }  // namespace
 
-GeomMass geom_mass(const XMLElement* geom, const std::vector<const XMLElement*>& defaults, const Compiler& compiler,
+GeomMass geom_mass(const XMLElement* geom, const GeomShape& geom_shape, const std::vector<const XMLElement*>& defaults,
                    Values& values) {
   auto lookup = [&](const char* name) { return Defaults::lookup(geom, defaults, name); };
   GeomMass out;
   const Span at = values.element_span(geom);
-  const Attr type_attr = lookup("type");
-  const std::string type(type_attr ? trim(type_attr.value) : std::string_view("sphere"));
+  const std::string& type = geom_shape.type;
   if (type == "plane") return out;  // no volume: MuJoCo gives it no mass whatever its density
-  if (lookup("mesh")) {
+  if (!geom_shape.mesh.empty()) {
     out.unknown = fmt::format("a geom at line {} takes its shape from a mesh", at.line);
     return out;
   }
@@ -58,26 +57,9 @@ GeomMass geom_mass(const XMLElement* geom, const std::vector<const XMLElement*>&
     out.unknown = fmt::format("a geom at line {} has shellinertia=\"true\"", at.line);
     return out;
   }
-
-  physics::SolidShape shape{*solid, Eigen::Vector3d::Zero()};
-  if (auto s = values.numbers(lookup("size"), "size"))
-    for (std::size_t i = 0; i < s->size() && i < 3; ++i) shape.size[static_cast<Eigen::Index>(i)] = (*s)[i];
-
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  if (auto ft = values.numbers(lookup("fromto"), "fromto", 6)) {
-    const Eigen::Vector3d from((*ft)[0], (*ft)[1], (*ft)[2]), to((*ft)[3], (*ft)[4], (*ft)[5]);
-    const Eigen::Vector3d along = to - from;
-    // The segment is the shape's z axis; for boxes and ellipsoids size[0] becomes both
-    // cross-section half-widths, so the turn about z does not change the inertia.
-    shape.size[1] = along.norm() / 2.0;
-    if (*solid == physics::Solid::Box || *solid == physics::Solid::Ellipsoid) shape.size = {shape.size[0], shape.size[0], shape.size[1]};
-    if (along.norm() > 0) rotation = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), along).toRotationMatrix();
-    position = (from + to) / 2.0;
-  } else {
-    if (auto p = values.numbers(lookup("pos"), "pos", 3)) position = {(*p)[0], (*p)[1], (*p)[2]};
-    rotation = orientation(geom, defaults, compiler, values);
-  }
+  const physics::SolidShape shape{*solid, geom_shape.size};
+  const Eigen::Vector3d position = geom_shape.pose.translation();
+  const Eigen::Matrix3d rotation = geom_shape.pose.linear();
   if (!complete(shape)) {
     out.unknown = fmt::format("the {} geom at line {} has no complete size", type, at.line);
     return out;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "formats/mjcf/mjcf_defaults.h"
+#include "formats/mjcf/mjcf_geom_shape.h"
 #include "formats/mjcf/mjcf_values.h"
 #include "physics/solid_inertia.h"
 
@@ -22,8 +23,9 @@ struct GeomMass {
   std::string unknown;                    // why its mass cannot be computed here (then part is nullopt)
 };
 
-// `defaults` are the geom default elements of the geom's class, outermost first.
-GeomMass geom_mass(const tinyxml2::XMLElement* geom, const std::vector<const tinyxml2::XMLElement*>& defaults,
-                   const Compiler& compiler, Values& values);
+// `shape` is the geom's shape (geom_shape); `defaults` the geom default elements of its class,
+// outermost first.
+GeomMass geom_mass(const tinyxml2::XMLElement* geom, const GeomShape& shape,
+                   const std::vector<const tinyxml2::XMLElement*>& defaults, Values& values);
 
 }  // namespace assetlint::mjcf

@@ -8,6 +8,7 @@
 
 #include "formats/mjcf/mjcf_actuators.h"
 #include "formats/mjcf/mjcf_couplings.h"
+#include "formats/mjcf/mjcf_collisions.h"
 #include "formats/mjcf/mjcf_dampratio.h"
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_geom_inertia.h"
@@ -59,6 +60,7 @@ class Reader {
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "default") defaults_.read(sources_, el, result_.diagnostics);
     read_options(sections);
+    meshes_ = read_mesh_assets(sources_, sections, defaults_, compiler_, values_);
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
     if (compiler_.settotalmass > 0) scale_to_total_mass(compiler_.settotalmass);
@@ -148,6 +150,9 @@ class Reader {
       compiler_.inertia_group_high = static_cast<int>((*r)[1]);
     }
     if (auto m = values_.numbers(own(el, "settotalmass"), "settotalmass", 1)) compiler_.settotalmass = (*m)[0];
+    if (const char* dir = el->Attribute("meshdir")) compiler_.meshdir = std::string(trim(dir));
+    else if (const char* assets = el->Attribute("assetdir"); assets && compiler_.meshdir.empty())
+      compiler_.meshdir = std::string(trim(assets));
   }
 
   void read_options(const std::vector<const XMLElement*>& sections) {
@@ -243,10 +248,26 @@ class Reader {
       if (tag == "inertial") read_inertial(c, link);
       else if (tag == "joint" || tag == "freejoint") joints += read_joint(c, link.name.text, parent, body_pose, cls);
     }
-    std::vector<PlacedGeom> geoms;
-    collect_geoms(el, cls, Eigen::Isometry3d::Identity(), geoms);
+    std::vector<PlacedGeom> placed;
+    collect_geoms(el, cls, Eigen::Isometry3d::Identity(), placed);
+    std::vector<Geom> geoms;
+    bool unknown_class = false;
+    for (const auto& [g, geom_cls, held_in] : placed) {
+      const auto geom_class = class_of(g, geom_cls);
+      if (!geom_class) {
+        unknown_class = true;
+        continue;
+      }
+      const auto& defs = defaults_.elements(*geom_class, "geom");
+      GeomShape shape = geom_shape(g, defs, compiler_, values_);
+      shape.pose = held_in * shape.pose;  // from the <frame> that holds the geom to the body
+      geoms.push_back(Geom{g, &defs, std::move(shape)});
+      if (geom_collides(g, defs, values_))
+        if (auto collision = collision_shape(g, geoms.back().shape, meshes_, values_))
+          link.collisions.push_back(std::move(*collision));
+    }
     // Without <inertial> (or when the compiler ignores it) MuJoCo sums the geoms' mass and inertia.
-    if (!link.inertial && compiler_.inertiafromgeom != "false") inertia_from_geoms(link, geoms);
+    if (!link.inertial && compiler_.inertiafromgeom != "false" && !unknown_class) inertia_from_geoms(link, geoms);
     if (joints == 0) {
       Joint weld;
       weld.name = Name{link.name.text + " (welded)", link.name.span};
@@ -291,25 +312,25 @@ class Reader {
     }
   }
 
-  void inertia_from_geoms(Link& link, const std::vector<PlacedGeom>& geoms) {
+  // A geom of a body, its default class's geom elements and its shape in the body frame.
+  struct Geom {
+    const XMLElement* element;
+    const std::vector<const XMLElement*>* defaults;
+    GeomShape shape;
+  };
+
+  void inertia_from_geoms(Link& link, const std::vector<Geom>& geoms) {
     std::vector<physics::MassPart> parts;
     bool unknown = false;
-    for (const auto& [g, cls, frame] : geoms) {
-      const auto geom_class = class_of(g, cls);
-      if (!geom_class) return;
-      const auto& defs = defaults_.elements(*geom_class, "geom");
+    for (const Geom& geom : geoms) {
+      const XMLElement* g = geom.element;
+      const auto& defs = *geom.defaults;
       int group = 0;
       if (auto v = values_.numbers(Defaults::lookup(g, defs, "group"), "group", 1)) group = static_cast<int>((*v)[0]);
       if (group < compiler_.inertia_group_low || group > compiler_.inertia_group_high) continue;
-      const GeomMass mass = geom_mass(g, defs, compiler_, values_);
-      if (!mass.unknown.empty()) {
-        unknown = true;
-      } else if (mass.part) {
-        physics::MassPart part = *mass.part;  // in the frame that holds the geom
-        part.com = frame * part.com;
-        part.inertia = frame.linear() * part.inertia * frame.linear().transpose();
-        parts.push_back(part);
-      }
+      const GeomMass mass = geom_mass(g, geom.shape, defs, values_);
+      if (!mass.unknown.empty()) unknown = true;
+      else if (mass.part) parts.push_back(*mass.part);
     }
     if (unknown) {
       link.mass_from_geoms = true;
@@ -514,6 +535,7 @@ class Reader {
   Values values_;
   Compiler compiler_;
   Defaults defaults_;
+  MeshAssets meshes_;
 };
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "formats/usda/skipped_layers.h"
+#include "formats/usda/usd_colliders.h"
 #include "rules/reader_rules.h"
 #include "util/numbers.h"
 
@@ -96,6 +97,7 @@ class Reader {
           scene.velocity_iterations = positive_setting(prim, "physxArticulation:solverVelocityIterationCount", Unit::None);
       }
     }
+    read_colliders(stage_, on_stage, mpu_, result_.asset);
     result_.asset.index_names();
     for (Joint& joint : result_.asset.joints) {
       if (!joint.mimic) continue;
