@@ -7,8 +7,8 @@
 #include <tuple>
 
 #include "formats/mjcf/mjcf_actuators.h"
-#include "formats/mjcf/mjcf_couplings.h"
 #include "formats/mjcf/mjcf_collisions.h"
+#include "formats/mjcf/mjcf_couplings.h"
 #include "formats/mjcf/mjcf_dampratio.h"
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_geom_inertia.h"
