@@ -132,6 +132,15 @@ TEST_CASE("verify MJCF: twice the required squeeze holds at every width, half of
   check_slips(Gripper("two_finger_mjcf", "two_finger.xml", mjcf_weak));
 }
 
+TEST_CASE("verify USD: a NewtonMimicAPI follower is coupled as the PhysX mimic is", "[verify][usd]") {
+  // Newton's joint0 = coef0 + coef1·joint1 is the model's own convention: coef1 = 1 where PhysX's gearing is −1.
+  check_holds(Gripper("two_finger_usd", "two_finger.usda", [](std::string t) {
+    t = replace_once(t, "prepend apiSchemas = [\"PhysxMimicJointAPI:rotX\"]", "prepend apiSchemas = [\"NewtonMimicAPI\"]");
+    t = replace_once(t, "rel physxMimicJoint:rotX:referenceJoint", "rel newton:mimicJoint");
+    return replace_once(t, "float physxMimicJoint:rotX:gearing = -1", "float newton:mimicCoef1 = 1");
+  }));
+}
+
 TEST_CASE("verify USD: Mesh colliders collide as the hull of their scaled points", "[verify][usd]") {
   check_holds(Gripper("two_finger_usd", "two_finger.usda", usd_mesh_pads));
 }

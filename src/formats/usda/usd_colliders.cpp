@@ -3,16 +3,17 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <unordered_map>
 
 #include "formats/usda/parser.h"
+#include "model/units.h"
 
 namespace assetlint::usda {
 namespace {
 
 constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-constexpr double kPi = 3.14159265358979323846;
 
 std::optional<std::vector<double>> numbers_of(const Stage& stage, const ComposedPrim& prim, std::string_view name) {
   auto opinion = prim.attribute(name);
@@ -35,7 +36,7 @@ std::optional<std::string> token_of(const ComposedPrim& prim, std::string_view n
 }
 
 Eigen::Matrix3d axis_rotation(char axis, double degrees) {
-  const double radians = degrees * kPi / 180.0;
+  const double radians = radians_from_degrees(degrees);
   const Eigen::Vector3d about = axis == 'X' ? Eigen::Vector3d::UnitX() : axis == 'Y' ? Eigen::Vector3d::UnitY()
                                                                                       : Eigen::Vector3d::UnitZ();
   return Eigen::AngleAxisd(radians, about).toRotationMatrix();
@@ -97,8 +98,8 @@ Eigen::Matrix3d rotation_of(const Eigen::Matrix3d& linear) {
 
 // Shapes along z in the model: the rotation that turns z onto the USD axis token.
 Eigen::Matrix3d z_onto(char axis) {
-  if (axis == 'X') return Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
-  if (axis == 'Y') return Eigen::AngleAxisd(-kPi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  if (axis == 'X') return Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  if (axis == 'Y') return Eigen::AngleAxisd(-std::numbers::pi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   return Eigen::Matrix3d::Identity();
 }
 
