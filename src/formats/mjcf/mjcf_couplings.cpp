@@ -77,14 +77,14 @@ struct FixedTendon {
   bool coupling = false;
 };
 
-FixedTendon read_fixed(const XMLElement* fixed, const Defaults& defaults, const Compiler& compiler, Values& values,
-                       const Asset& asset) {
+FixedTendon read_fixed(const MjcfSources& sources, const XMLElement* fixed, const Defaults& defaults,
+                       const Compiler& compiler, Values& values, const Asset& asset) {
   FixedTendon tendon;
   double sweep = 0;
   bool sweep_known = true;
-  for (const XMLElement* j = fixed->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+  for (const XMLElement* j : sources.children(fixed)) {
     const char* name = j->Attribute("joint");
-    if (!name) continue;
+    if (!name || std::string_view(j->Name()) != "joint") continue;
     tendon.joints.emplace_back(trim(name));
     const auto index = joint_named(asset, tendon.joints.back());
     const Joint* joint = index ? &asset.joints[*index] : nullptr;
@@ -117,9 +117,12 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
     if (std::string_view(el->Name()) != "tendon") continue;
     for (const XMLElement* fixed : sources.children(el)) {
       if (std::string_view(fixed->Name()) != "fixed") continue;
-      FixedTendon tendon = read_fixed(fixed, defaults, compiler, values, asset);
+      FixedTendon tendon = read_fixed(sources, fixed, defaults, compiler, values, asset);
       if (tendon.coupling) out.tendons.push_back(tendon.joints);
-      if (const char* name = fixed->Attribute("name")) named[std::string(trim(name))] = std::move(tendon);
+      if (const char* name = fixed->Attribute("name")) {
+        out.fixed[name] = tendon.joints;
+        named[std::string(trim(name))] = std::move(tendon);
+      }
     }
   }
   for (const XMLElement* el : sections) {

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "formats/mjcf/mjcf_actuators.h"
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_values.h"
 #include "model/asset.h"
@@ -22,13 +23,15 @@
 namespace assetlint::mjcf {
 
 struct Couplings {
+  FixedTendons fixed;                              // every named fixed tendon's joints
   std::vector<std::vector<std::string>> tendons;  // the joints of each coupling tendon
   std::vector<std::pair<std::string, std::string>> loops;  // bodies a connect or weld ties together
   std::vector<std::string> mocap_driven;                   // bodies welded or connected to a mocap body
   std::set<std::string> coupled_joints;                    // named by an <equality><joint>
 };
 
-// Reads the couplings of a model's top-level sections (after the bodies and joints).
+// Reads the fixed tendons and couplings of a model's top-level sections (after the bodies and
+// joints, before the actuators, which name the tendons they pull).
 Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, const Compiler& compiler,
                          const std::vector<const tinyxml2::XMLElement*>& sections, Values& values, const Asset& asset);
 

@@ -64,7 +64,8 @@ class Reader {
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
     if (compiler_.settotalmass > 0) scale_to_total_mass(compiler_.settotalmass);
-    const FixedTendons tendons = read_fixed_tendons(sections);
+    const Couplings couplings = read_couplings(sources_, defaults_, compiler_, sections, values_, result_.asset);
+    const FixedTendons& tendons = couplings.fixed;
     std::vector<const XMLElement*> joint_equalities;
     // An actuator on a spatial tendon, a site or a body moves joints the model does not name
     // (a tendon-driven hand's finger joints): then no joint can be called passive.
@@ -89,7 +90,6 @@ class Reader {
         }
       }
     }
-    const Couplings couplings = read_couplings(sources_, defaults_, compiler_, sections, values_, result_.asset);
     drive_through_couplings(couplings, result_.asset);
     // MJCF lists every actuator: a joint none of them reaches is moved only by its links.
     if (any_actuator && !unnamed_transmission) {
@@ -111,22 +111,6 @@ class Reader {
   }
 
  private:
-  FixedTendons read_fixed_tendons(const std::vector<const XMLElement*>& sections) const {
-    FixedTendons tendons;
-    for (const XMLElement* el : sections) {
-      if (std::string_view(el->Name()) != "tendon") continue;
-      for (const XMLElement* fixed : sources_.children(el)) {
-        const char* name = fixed->Attribute("name");
-        if (std::string_view(fixed->Name()) != "fixed" || !name) continue;
-        std::vector<std::string>& joints = tendons[name];
-        for (const XMLElement* j : sources_.children(fixed))
-          if (const char* joint = j->Attribute("joint"); joint && std::string_view(j->Name()) == "joint")
-            joints.emplace_back(trim(joint));
-      }
-    }
-    return tendons;
-  }
-
   void read_compiler(const XMLElement* el) {
     if (const char* angle = el->Attribute("angle")) {
       const std::string_view a = trim(angle);
