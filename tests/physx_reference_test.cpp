@@ -59,13 +59,7 @@ const Measurements& measurements() {
   return result;
 }
 
-bool skip_without_physx() {
-  const auto& m = measurements();
-  if (m.skipped.empty()) return false;
-  if (assetlint::test::in_ci()) FAIL("PhysX reference missing under CI=true: " << m.skipped);
-  WARN("PhysX reference skipped: " << m.skipped);
-  return true;
-}
+bool skip_without_physx() { return assetlint::test::skip_without_reference("PhysX", measurements().skipped); }
 
 const nlohmann::json& find_case(const std::string& name) {
   for (const auto& c : measurements().json["cases"])

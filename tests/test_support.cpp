@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include <catch2/catch.hpp>
+
 #include <cstdlib>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -86,6 +88,13 @@ TempDir::~TempDir() {
   std::error_code ec;
   std::filesystem::permissions(path_, std::filesystem::perms::owner_all, std::filesystem::perm_options::add, ec);
   std::filesystem::remove_all(path_, ec);
+}
+
+bool skip_without_reference(const std::string& name, const std::string& skipped) {
+  if (skipped.empty()) return false;
+  if (in_ci()) FAIL(name << " reference missing under CI=true: " << skipped);
+  WARN(name << " reference skipped: " << skipped << "; run scripts/bootstrap.sh");
+  return true;
 }
 
 bool in_ci() {

@@ -16,6 +16,9 @@ std::filesystem::path corpus_dir();
 // CI=true in the environment: a reference implementation bootstrap installs must be there, so a
 // test that needs one fails instead of skipping.
 bool in_ci();
+// Whether a test that needs reference implementation `name` skips: not when `skipped` (why it
+// could not run) is empty; under CI=true a missing reference fails the test instead.
+bool skip_without_reference(const std::string& name, const std::string& skipped);
 
 std::string read_file(const std::filesystem::path& path);
 // `text` with the first `from` replaced by `to`; throws when `from` is not in it.

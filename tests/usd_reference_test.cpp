@@ -148,13 +148,7 @@ const Reference& reference() {
   return result;
 }
 
-bool skip_without_openusd() {
-  const auto& r = reference();
-  if (r.skipped.empty()) return false;
-  if (assetlint::test::in_ci()) FAIL("OpenUSD reference missing under CI=true: " << r.skipped);
-  WARN("OpenUSD reference skipped: " << r.skipped << "; run scripts/bootstrap.sh");
-  return true;
-}
+bool skip_without_openusd() { return assetlint::test::skip_without_reference("OpenUSD", reference().skipped); }
 
 // Files held in memory; anything else is missing.
 class OneFile final : public assetlint::FileSystem {
