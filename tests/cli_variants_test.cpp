@@ -96,7 +96,7 @@ TEST_CASE("cli variants: --show-settings lists the variant sets and the selectio
   CHECK(occurrences(r.out, "# variants is not set: the stage's selections, and every variant that carries physics") == 1);
   CHECK(occurrences(r.out, "#   </gripper> PhysX = [\"Disabled\", \"Enabled\"], selects \"Disabled\"") == 1);
   CHECK(occurrences(r.out, "#   </gripper> Newton = [\"Disabled\", \"Enabled\"], selects \"Disabled\"") == 1);
-  CHECK(occurrences(r.out, "# checked: the stage's selection, PhysX=Enabled, Newton=Enabled, MuJoCo=Enabled") == 1);
+  CHECK(occurrences(r.out, "# checked: the stage's selection; PhysX=Enabled; Newton=Enabled; MuJoCo=Enabled") == 1);
 }
 
 TEST_CASE("cli variants: a directory run judges the payload layers once, in the stage", "[cli][usd][variants]") {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "test_support.h"
+#include "support/openusd_oracle.h"
 
 #include "engine/settings.h"
 #include "formats/usda/parser.h"
@@ -27,8 +28,6 @@
 using assetlint::test::corpus_dir;
 using assetlint::test::fixtures_dir;
 using assetlint::test::read_file;
-using assetlint::test::shell_quote;
-using assetlint::test::source_dir;
 
 namespace {
 
@@ -63,33 +62,20 @@ struct Reference {
 const Reference& reference() {
   static const Reference result = [] {
     Reference r;
-    const auto package = source_dir() / "tools" / "node_modules" / "three-usdz-loader";
-    if (!assetlint::test::on_path("node")) {
-      r.skipped = "node not found on PATH";
-      return r;
-    }
-    if (!fs::exists(package / "external" / "emHdBindings.wasm")) {
-      r.skipped = "three-usdz-loader not installed in tools/node_modules (scripts/bootstrap.sh was not run)";
-      return r;
-    }
+    r.skipped = assetlint::test::openusd_missing();
+    if (!r.skipped.empty()) return r;
     assetlint::test::TempDir dir;
-    const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
-    std::string command = "timeout 300 node " +
-                          shell_quote((source_dir() / "tests" / "usd_reference" / "export_layers.mjs").string()) + " " +
-                          shell_quote(package.string());
-    for (const auto& f : crate_files()) command += " " + shell_quote(f.string());
+    std::vector<std::string> args;
+    for (const auto& f : crate_files()) args.push_back(f.string());
     for (const auto& f : crate_files()) {
       auto result = usdc::crate_to_usda(read_file(f));
       if (auto* e = std::get_if<usdc::CrateError>(&result)) FAIL(usdc::describe(*e, f.string()));
       r.cat_texts.push_back(std::get<usdc::CrateText>(result).text);
       const auto text = dir.path() / fmt::format("cat{}.usda", r.cat_texts.size());
       assetlint::test::write_file(text, r.cat_texts.back());
-      command += " " + shell_quote(text.string());
+      args.push_back(text.string());
     }
-    command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-    const int status = std::system(command.c_str());
-    if (status != 0) FAIL("export_layers.mjs failed (status " << status << "): " << read_file(err));
-    r.json = nlohmann::json::parse(read_file(out));
+    r.json = assetlint::test::run_openusd("export_layers.mjs", args, dir.path());
     return r;
   }();
   return result;

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "test_support.h"
+#include "support/openusd_oracle.h"
 
 #include "engine/file_system.h"
 #include "formats/usda/compose.h"
@@ -34,8 +35,6 @@
 using assetlint::test::corpus_dir;
 using assetlint::test::fixtures_dir;
 using assetlint::test::read_file;
-using assetlint::test::shell_quote;
-using assetlint::test::source_dir;
 
 namespace {
 
@@ -122,27 +121,13 @@ std::filesystem::path variant_dir() {
 const Reference& reference() {
   static const Reference result = [] {
     Reference r;
-    const auto package = source_dir() / "tools" / "node_modules" / "three-usdz-loader";
-    if (!assetlint::test::on_path("node")) {
-      r.skipped = "node not found on PATH";
-      return r;
-    }
-    if (!std::filesystem::exists(package / "external" / "emHdBindings.wasm")) {
-      r.skipped = "three-usdz-loader not installed in tools/node_modules (scripts/bootstrap.sh was not run)";
-      return r;
-    }
+    r.skipped = assetlint::test::openusd_missing();
+    if (!r.skipped.empty()) return r;
     assetlint::test::TempDir dir;
-    const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
-    std::string command = "timeout 300 node " +
-                          shell_quote((source_dir() / "tests" / "usd_reference" / "flatten.mjs").string()) + " " +
-                          shell_quote(package.string()) + " " + shell_quote(fixtures_dir().string());
-    if (!corpus_dir().empty()) command += " " + shell_quote((corpus_dir() / "usda").string());
-    if (!variant_dir().empty()) command += " " + shell_quote(variant_dir().string());
-    command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-    const int status = std::system(command.c_str());
-    // The tools are there, so a failure is a real one, not a reason to skip.
-    if (status != 0) FAIL("flatten.mjs failed (status " << status << "): " << read_file(err));
-    r.json = nlohmann::json::parse(read_file(out));
+    std::vector<std::string> args{fixtures_dir().string()};
+    if (!corpus_dir().empty()) args.push_back((corpus_dir() / "usda").string());
+    if (!variant_dir().empty()) args.push_back(variant_dir().string());
+    r.json = assetlint::test::run_openusd("flatten.mjs", args, dir.path());
     return r;
   }();
   return result;

@@ -72,7 +72,7 @@ TEST_CASE("crate: --fix never writes a binary layer; the note gives the value", 
 TEST_CASE("crate: a directory run reads crate layers instead of skipping them", "[usdc][cli]") {
   const auto r = run_cli({"fixtures/usdc"});
   CHECK(r.out.find("Skipped") == std::string::npos);
-  CHECK(r.out.find("in 4 files") != std::string::npos);
+  CHECK(r.out.find("in 10 files") != std::string::npos);
 }
 
 TEST_CASE("crate: `asset-lint cat` prints the layer as USDA", "[usdc][cli]") {

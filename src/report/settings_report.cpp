@@ -65,10 +65,12 @@ void write_usd(std::ostream& out, const std::string& file, const Settings& setti
     out << fmt::format("#   <{}> {} = [{}], {} \"{}\"\n", use.prim, use.set, fmt::join(variants, ", "),
                        use.pinned ? "pinned to" : "selects", use.selection);
   }
-  out << fmt::format("# checked: the stage's selection{}{}\n", run->checked.empty() ? "" : ", ",
-                     fmt::join(run->checked, ", "));
+  // "; " between selections, as findings list them: one selection may name several sets
+  // ("Newton=Enabled, NewtonSolver=Featherstone").
+  out << fmt::format("# checked: the stage's selection{}{}\n", run->checked.empty() ? "" : "; ",
+                     fmt::join(run->checked, "; "));
   if (!run->without_physics.empty())
-    out << fmt::format("# not checked, no physics in them: {}\n", fmt::join(run->without_physics, ", "));
+    out << fmt::format("# not checked, no physics in them: {}\n", fmt::join(run->without_physics, "; "));
 }
 
 }  // namespace

@@ -41,6 +41,9 @@ bool is_arc(std::string_view key) {
   return key == "references" || key == "payload" || key == "inherits" || key == "specializes";
 }
 
+// List-op metadata that OpenUSD's text writer writes without brackets when it holds one item.
+bool bare_when_single(std::string_view key) { return is_arc(key) || key == "variantSetNames"; }
+
 // Names in the order OpenUSD's text writer lists properties: letters without regard to
 // case ('_' before them), digit runs by value, then byte order.
 bool dictionary_less(std::string_view a, std::string_view b) {
@@ -170,7 +173,7 @@ class Writer {
             if (kind != ItemOp::Explicit) text += std::string(item_op_keyword(kind)) + " ";
             text += shown + " = ";
             if (items.empty() && kind == ItemOp::Explicit) text += "None";
-            else if (items.size() == 1 && is_arc(key)) text += items[0];
+            else if (items.size() == 1 && bare_when_single(key)) text += items[0];
             else text += bracketed(items, indent);
             lines.push_back(text + "\n");
           }
@@ -255,13 +258,16 @@ class Writer {
     for (const std::string& set : names(fields, "variantSetChildren", path)) {
       const auto set_index = find(path + "{" + set + "=}");
       if (!set_index) continue;
+      // As OpenUSD writes a variant set: its variants by name, and nothing for a set without one.
+      std::vector<std::pair<std::string, std::size_t>> variants;
+      for (const std::string& variant : names(file_.fields_of(file_.specs()[*set_index]), "variantChildren", path))
+        if (const auto v = find(path + "{" + set + "=" + variant + "}")) variants.emplace_back(variant, *v);
+      if (variants.empty()) continue;
+      std::sort(variants.begin(), variants.end());
       out_ += pad + "variantSet " + quoted(set) + " = {\n";
-      const std::vector<Field> set_fields = file_.fields_of(file_.specs()[*set_index]);
-      for (const std::string& variant : names(set_fields, "variantChildren", path)) {
+      for (const auto& [variant, v] : variants) {
         const std::string variant_path = path + "{" + set + "=" + variant + "}";
-        const auto v = find(variant_path);
-        if (!v) continue;
-        const std::vector<Field> variant_fields = file_.fields_of(file_.specs()[*v]);
+        const std::vector<Field> variant_fields = file_.fields_of(file_.specs()[v]);
         locate(variant_path);
         out_ += indentation(indent + 1) + quoted(variant);
         metadata_block(variant_fields, variant_path, indent + 1);
