@@ -234,10 +234,13 @@ TEST_CASE("each variant selection of a crate stack has the findings of its USDA 
                                      {{"Newton", "Enabled"}, {"NewtonSolver", "Featherstone"}},
                                      {{"MuJoCo", "Enabled"}, {"PhysX", "Disabled"}},
                                      {{"Physics", "None"}},
-                                     {{"Physics", "PhysX"}}};
+                                     {{"Physics", "PhysX"}},
+                                     {{"Physics", "physx-lite"}},
+                                     {{"Gains", "Stiff"}},
+                                     {{"Collider", "Mesh"}}};
   std::size_t compared = 0, in_variant = 0;
-  for (const char* root : {"simready/gripper.usd", "simready/runnables/physics/physx.usd", "isaac_arm.usd",
-                           "gripper_physx_enabled.usda", "isaac_arm_without_physics.usda"}) {
+  for (const char* root : {"simready/gripper.usd", "simready/runnables/physics/physx.usd", "isaac_arm.usd", "edge_cases.usd",
+                           "gripper_physx_enabled.usda", "isaac_arm_without_physics.usda", "edge_cases_soft_gains.usda"}) {
     for (const Pins& pins : selections) {
       std::string label = root;
       for (const auto& [set, name] : pins) label += fmt::format(" --variant {}={}", set, name);
@@ -252,7 +255,7 @@ TEST_CASE("each variant selection of a crate stack has the findings of its USDA 
       for (const auto& f : crate) in_variant += f.find(": in variant") != std::string::npos;
     }
   }
-  CHECK(compared == 40);
+  CHECK(compared == 77);
   CHECK(in_variant >= 10);
 }
 

@@ -25,8 +25,10 @@ Fields stage_metadata(std::string doc, std::string default_prim) {
 }
 
 // A rigid body's opinions on an existing Xform (`over`), as a physics layer or variant adds them.
-std::vector<Spec> body(const std::string& path, float mass, Float3 inertia) {
-  return {prim(path, Specifier::Over, "", {{"apiSchemas", prepend_tokens({"PhysicsRigidBodyAPI", "PhysicsMassAPI"})}}),
+std::vector<Spec> body(const std::string& path, float mass, Float3 inertia, Fields more = {}) {
+  Fields metadata{{"apiSchemas", prepend_tokens({"PhysicsRigidBodyAPI", "PhysicsMassAPI"})}};
+  for (auto& m : more) metadata.push_back(std::move(m));
+  return {prim(path, Specifier::Over, "", std::move(metadata)),
           attribute(path + ".physics:mass", "float", Float{mass}),
           attribute(path + ".physics:diagonalInertia", "float3", inertia),
           attribute(path + ".physics:centerOfMass", "point3f", Float3{0.0f, 0.0f, 0.01f})};
@@ -137,12 +139,72 @@ std::string isaac_arm() {
   return write_crate(specs);
 }
 
+// Variant specs in the less common places and spellings OpenUSD allows.
+std::string variant_edge_cases() {
+  StringListOp set_names;
+  set_names.prepended = {"Physics"};
+  set_names.appended = {"Gains"};
+  set_names.deleted = {"Legacy"};
+  TokenListOp explicit_schemas;
+  explicit_schemas.is_explicit = true;
+  explicit_schemas.explicit_items = {"PhysicsArticulationRootAPI"};
+  TokenListOp deleted_schemas;
+  deleted_schemas.deleted = {"PhysicsArticulationRootAPI"};
+  PayloadListOp two_payloads;
+  two_payloads.is_explicit = true;
+  two_payloads.explicit_items = {{"./simready/runnables/physics/mujoco.usda", "/gripper"},
+                                 {"./simready/runnables/physics/physx.usd", ""}};
+  std::vector<Spec> specs{
+      pseudo_root(stage_metadata("Variant specs in less common places: properties on a variant, a variant set on a "
+                                 "prim inside a variant, explicit and deleting list ops, an empty selection.",
+                                 "robot")),
+      // Selections and set names in another order than the set specs; "Gains" selects nothing.
+      prim("/robot", Specifier::Def, "Xform",
+           {{"variantSelection", Selections{{{"Gains", ""}, {"Physics", "PhysX"}}}}, {"variantSetNames", set_names}}),
+      prim("/robot/base", Specifier::Def, "Xform"),
+      prim("/robot/link", Specifier::Def, "Xform"),
+      prim("/robot/joint", Specifier::Def, "PhysicsRevoluteJoint",
+           {{"apiSchemas", prepend_tokens({"PhysicsDriveAPI:angular"})}}),
+      relationship("/robot/joint.physics:body0", {"/robot/base"}),
+      relationship("/robot/joint.physics:body1", {"/robot/link"}),
+      attribute("/robot/joint.physics:axis", "token", Token{"Y"}, Variability::Uniform),
+      variant_set("/robot", "Gains"),
+      variant("/robot", "Gains", "Stiff"),
+      prim("/robot{Gains=Stiff}joint", Specifier::Over),
+      attribute("/robot{Gains=Stiff}joint.drive:angular:physics:stiffness", "float", Float{500.0f}),
+      attribute("/robot{Gains=Stiff}joint.drive:angular:physics:damping", "double", Double{0.3}),
+      variant("/robot", "Gains", "Soft"),
+      prim("/robot{Gains=Soft}joint", Specifier::Over),
+      attribute("/robot{Gains=Soft}joint.drive:angular:physics:stiffness", "float", Float{5.0f}),
+      variant_set("/robot", "Physics"),
+      variant("/robot", "Physics", "physx-lite", {{"payload", two_payloads}}),
+      variant("/robot", "Physics", "PhysX",
+              {{"documentation", String{"PhysX's physics, authored in the variant."}},
+               {"apiSchemas", explicit_schemas}}),
+      // Properties of the variant itself: opinions on /robot.
+      attribute("/robot{Physics=PhysX}.physxArticulation:enabledSelfCollisions", "bool", false, Variability::Uniform),
+      relationship("/robot{Physics=PhysX}.physics:filteredPairs", {"/robot/base", "/robot/link"}),
+      variant("/robot", "Physics", "None", {{"apiSchemas", deleted_schemas}}),
+  };
+  const std::string physx = "/robot{Physics=PhysX}";
+  append(specs, body(physx + "base", 2.0f, {0.01f, 0.01f, 0.01f}));
+  // A variant set on a prim inside the variant, with its selection there too.
+  append(specs, body(physx + "link", 0.5f, {0.001f, 0.001f, 0.0005f},
+                     {{"variantSelection", Selections{{{"Collider", "Box"}}}},
+                      {"variantSetNames", prepend_strings({"Collider"})}}));
+  append(specs, {variant_set(physx + "link", "Collider"), variant(physx + "link", "Collider", "Mesh"),
+                 variant(physx + "link", "Collider", "Box",
+                         {{"apiSchemas", prepend_tokens({"PhysicsCollisionAPI"})}})});
+  return write_crate(specs);
+}
+
 }  // namespace
 
 std::vector<CrateAsset> crate_variant_assets() {
   return {{"usdc/variants/simready/gripper.usd", simready_gripper()},
           {"usdc/variants/simready/runnables/physics/physx.usd", physx_payload()},
-          {"usdc/variants/isaac_arm.usd", isaac_arm()}};
+          {"usdc/variants/isaac_arm.usd", isaac_arm()},
+          {"usdc/variants/edge_cases.usd", variant_edge_cases()}};
 }
 
 }  // namespace assetlint::test
