@@ -40,12 +40,29 @@ TEST_CASE("cli variants: the PhysX payload's drive is found only with PhysX=Enab
   auto json = run_cli({"--output-format", "json", kGripper}, fixtures);
   const auto doc = nlohmann::json::parse(json.out);
   std::size_t in_variant = 0;
+  const auto both = nlohmann::json::parse(R"([[{"set": "PhysX", "variant": "Enabled"}], [{"set": "MuJoCo", "variant": "Enabled"}]])");
   for (const auto& d : doc["diagnostics"]) {
-    if (d["message"].get<std::string>().rfind("in variant", 0) != 0) continue;
+    if (d["message"].get<std::string>().rfind("in variant", 0) != 0) {
+      CHECK_FALSE(d.contains("variants"));
+      continue;
+    }
     ++in_variant;
     CHECK(d["notes"][0]["message"].get<std::string>().rfind("Found with ", 0) == 0);
+    // The selections as data too, one list per selection.
+    const bool shared = d["message"].get<std::string>().rfind("in variants PhysX=Enabled; MuJoCo=Enabled: ", 0) == 0;
+    CHECK(d["variants"] == (shared ? both : nlohmann::json::parse(R"([[{"set": "Newton", "variant": "Enabled"}]])")));
   }
   CHECK(in_variant == 2);
+
+  auto sarif = nlohmann::json::parse(run_cli({"--output-format", "sarif", kGripper}, fixtures).out);
+  std::size_t with_variants = 0;
+  for (const auto& r : sarif["runs"][0]["results"]) {
+    if (!r.contains("properties") || !r["properties"].contains("variants")) continue;
+    ++with_variants;
+    if (r["message"]["text"].get<std::string>().rfind("in variants PhysX=Enabled; MuJoCo=Enabled: ", 0) == 0)
+      CHECK(r["properties"]["variants"] == both);
+  }
+  CHECK(with_variants == 2);
 
   for (const char* format : {"sarif", "github", "gitlab", "junit"}) {
     INFO(format);

@@ -26,6 +26,7 @@
 #include "formats/usda/parser.h"
 #include "formats/usdc/crate_usda.h"
 #include "pipeline/lint.h"
+#include "pipeline/variant_label.h"
 #include "support/crate_variant_assets.h"
 #include "support/crate_writer.h"
 #include "support/openusd_oracle.h"
@@ -290,6 +291,9 @@ TEST_CASE("cli: a crate gripper's findings name their variant selection, in crat
     // A crate layer has no lines: its findings give the object path.
     const std::string file = d["file"].get<std::string>();
     CHECK(d.contains("object_path") == (file.size() > 4 && file.substr(file.size() - 4) == ".usd"));
+    if (d["message"].get<std::string>().find("NewtonSolver=Featherstone") != std::string::npos)
+      CHECK(d["variants"] == nlohmann::json::parse(R"([[{"set": "Newton", "variant": "Enabled"},
+                                                        {"set": "NewtonSolver", "variant": "Featherstone"}]])"));
   }
   CHECK(in_variant == 4);
 }
@@ -322,4 +326,20 @@ TEST_CASE("cli: --variant and --show-settings on a crate layer", "[cli][usdc][va
   INFO(pinned.out);
   CHECK(occurrences(pinned.out, "#   </arm> Physics = [\"None\", \"PhysX\"], pinned to \"None\"") == 1);
   CHECK(occurrences(pinned.out, "# checked: the stage's selection\n") == 1);
+}
+
+TEST_CASE("a finding's variant selections read back from its message", "[variants]") {
+  using assetlint::VariantSelection;
+  const std::vector<VariantSelection> selections{{{"PhysX", "Enabled"}},
+                                                 {{"Newton", "Enabled"}, {"NewtonSolver", "Featherstone"}},
+                                                 {{"Physics", "physx-lite"}}};
+  const std::string message = assetlint::variant_prefix(selections) + "drive of 'finger': natural frequency 4 rad/s";
+  CHECK(message.rfind("in variants PhysX=Enabled; Newton=Enabled, NewtonSolver=Featherstone; Physics=physx-lite: ", 0) == 0);
+  CHECK(assetlint::variant_selections(message) == selections);
+  CHECK(assetlint::variant_prefix({selections[0]}) == "in variant PhysX=Enabled: ");
+  CHECK(assetlint::variant_selections("in variant PhysX=Enabled: x") == std::vector<VariantSelection>{selections[0]});
+  // Messages that only look alike name no selection.
+  CHECK(assetlint::variant_selections("drive of 'in variant A=B: '").empty());
+  CHECK(assetlint::variant_selections("in variant sets of </a>: nothing").empty());
+  CHECK(assetlint::variant_selections("in variants A=B").empty());
 }

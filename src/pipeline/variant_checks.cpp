@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "formats/usda/usd_reader.h"
+#include "pipeline/variant_label.h"
 
 namespace assetlint {
 namespace {
@@ -15,17 +16,11 @@ namespace {
 // Compositions beyond the authored one, at most: sets of many variants each multiply the work.
 constexpr std::size_t kMaxVariantCompositions = 32;
 
-using Choice = std::pair<std::string, std::string>;  // set, variant
+using Choice = VariantChoice;
 
 struct Pending {
   std::vector<Choice> choices;  // beyond the configured pins; the last one is the variant under test
 };
-
-std::string label_of(const std::vector<Choice>& choices) {
-  std::string out;
-  for (const auto& [set, variant] : choices) out += fmt::format("{}{}={}", out.empty() ? "" : ", ", set, variant);
-  return out;
-}
 
 // What the stage selects in the sets a label names: "PhysX=Disabled", "PhysX: none".
 std::string authored_selection(const std::vector<usda::VariantSetUse>& sets, const std::vector<Choice>& choices) {
@@ -63,7 +58,7 @@ class VariantChecker {
         return u.set == set && u.selection == variant && u.physics;
       });
       discover(stage.variant_sets, p.choices);
-      const std::string label = label_of(p.choices);
+      const std::string label = selection_label(p.choices);
       if (!physics) {
         run_.without_physics.push_back(label);
         continue;
@@ -148,21 +143,18 @@ class VariantChecker {
 
   void finish(std::vector<Diagnostic>& diagnostics) {
     for (auto& [d, choices] : added_) {
-      std::vector<std::string> labels;
       std::vector<Choice> sets;
-      for (const auto& c : choices) {
-        labels.push_back(label_of(c));
+      for (const auto& c : choices)
         for (const Choice& choice : c)
           if (std::none_of(sets.begin(), sets.end(), [&](const Choice& s) { return s.first == choice.first; }))
             sets.push_back(choice);
-      }
       std::string joined;
-      for (const std::string& l : labels) joined += (joined.empty() ? "" : "; ") + l;
-      d.message = fmt::format("in variant{} {}: {}", labels.size() == 1 ? "" : "s", joined, d.message);
+      for (const auto& c : choices) joined += (joined.empty() ? "" : "; ") + selection_label(c);
+      d.message = variant_prefix(choices) + d.message;
       d.notes.insert(d.notes.begin(),
                      Note{fmt::format("Found with {} selected; the stage itself selects {}. asset-lint checks each "
                                       "variant whose opinions carry physics.",
-                                      labels.size() == 1 ? joined : "each of " + joined,
+                                      choices.size() == 1 ? joined : "each of " + joined,
                                       authored_selection(authored_, sets)),
                           Span{}});
       diagnostics.push_back(std::move(d));

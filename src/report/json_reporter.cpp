@@ -4,6 +4,7 @@
 
 #include "report/report_util.h"
 #include "report/summary.h"
+#include "report/variant_json.h"
 
 namespace assetlint {
 
@@ -27,6 +28,7 @@ void write_json(std::ostream& out, const std::vector<FileReport>& reports, const
       item["rule"] = d.rule;
       item["severity"] = severity_name(d.severity);
       item["message"] = d.message;
+      if (auto variants = variants_json(d.message)) item["variants"] = std::move(*variants);
       // v1 added `notes` (each with an optional location); the fields above are unchanged.
       ordered_json notes = ordered_json::array();
       for (const Note& note : d.notes) {

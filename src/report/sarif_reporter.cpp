@@ -7,6 +7,7 @@
 
 #include "report/rule_docs.h"
 #include "report/report_util.h"
+#include "report/variant_json.h"
 #include "report/summary.h"
 #include "rules/registry.h"
 
@@ -196,6 +197,7 @@ void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, cons
         result["fixes"] = ordered_json::array({std::move(fix)});
         result["properties"] = {{"applicability", applicability_name(d.fix->applicability)}};
       }
+      if (auto variants = variants_json(d.message)) result["properties"]["variants"] = std::move(*variants);
       results.push_back(std::move(result));
     }
   }
