@@ -326,6 +326,12 @@ TEST_CASE("cli: --variant and --show-settings on a crate layer", "[cli][usdc][va
   INFO(pinned.out);
   CHECK(occurrences(pinned.out, "#   </arm> Physics = [\"None\", \"PhysX\"], pinned to \"None\"") == 1);
   CHECK(occurrences(pinned.out, "# checked: the stage's selection\n") == 1);
+
+  // An option where --show-settings wants its FILE is a usage error, not a file of that name.
+  auto misplaced = run_cli({"--show-settings", "--variant", "Physics=None", "usdc/variants/isaac_arm.usd"}, fixtures);
+  CHECK(misplaced.exit_code == 2);
+  CHECK(occurrences(misplaced.err, "expects a FILE, not the option --variant") == 1);
+  CHECK(misplaced.out.empty());
 }
 
 TEST_CASE("a finding's variant selections read back from its message", "[variants]") {

@@ -91,7 +91,12 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--list-rules", o.list_rules, "List every rule and exit (--output-format json: as JSON)");
   app.add_flag("--show-files", o.show_files, "Print the files a run would check, one per line, and exit");
   app.add_option("--show-settings", o.show_settings,
-                 "Print the settings a check of FILE would use, each with where it came from, and exit");
+                 "Print the settings a check of FILE would use, each with where it came from, and exit")
+      // `--show-settings --variant A=B FILE` would otherwise show the settings of a file named "--variant".
+      ->check([](const std::string& s) {
+        return s.rfind("--", 0) == 0 ? "expects a FILE, not the option " + s + " (put options before --show-settings)"
+                                     : std::string();
+      });
   app.add_flag("--version", o.version, "Print the version and exit");
   app.footer(
       "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint expand FILE.xacro print the URDF a .xacro file expands to\n  asset-lint rule RULE-ID      print a rule's documentation (rule --all: every rule)\n  asset-lint cat FILE.usd      print a binary (crate) USD layer as USDA\n\n"
