@@ -97,6 +97,34 @@ TEST_CASE("verify: a too-stiff undamped drive at a coarse step fails", "[verify]
   CHECK(scene(report, "grasp", 1)["metrics"]["peak_penetration_m"].get<double>() > 0.002);
 }
 
+TEST_CASE("verify: the box is turned with the fingers, whichever axis they close along", "[verify]") {
+  // With a max force the spring never reaches, the squeeze tells where the fingers met the box: each
+  // finger travels 45 mm toward closed and meets a box of width w after (90 mm − w)/2, so the drive
+  // stops w/2 short of its target and pushes k·w/2: 4000 N/m × 40.5, 22.5 and 5 mm = 162, 90 and 20 N.
+  // A box turned a quarter turn would offer the fingers its 18 mm depth instead, at every width.
+  const auto unsaturated = [](std::string t) { return replace_once(t, "max_force = 20", "max_force = 1000"); };
+  const auto along_y = [](std::string t) {
+    t = replace_once(t, "<box size=\"0.12 0.04 0.02\"/>", "<box size=\"0.04 0.12 0.02\"/>");
+    for (int i = 0; i < 2; ++i) t = replace_once(t, "<box size=\"0.01 0.02 0.06\"/>", "<box size=\"0.02 0.01 0.06\"/>");
+    t = replace_once(t, "<origin xyz=\"-0.05 0 0.05\"/><axis xyz=\"1 0 0\"/>", "<origin xyz=\"0 -0.05 0.05\"/><axis xyz=\"0 1 0\"/>");
+    return replace_once(t, "<origin xyz=\"0.05 0 0.05\"/><axis xyz=\"-1 0 0\"/>", "<origin xyz=\"0 0.05 0.05\"/><axis xyz=\"0 -1 0\"/>");
+  };
+  for (const bool y : {false, true}) {
+    INFO((y ? "closing along y" : "closing along x"));
+    TwoFinger gripper(unsaturated, y ? along_y : [](std::string t) { return t; });
+    const auto r = gripper.run();
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto report = nlohmann::json::parse(r.out);
+    const double widths[] = {0.081, 0.045, 0.010};
+    for (int i = 0; i < 3; ++i) {
+      const auto& grasp = scene(report, "grasp", i);
+      CHECK(grasp["object"]["width_m"].get<double>() == Approx(widths[i]));
+      CHECK(grasp["metrics"]["grip_force_n"].get<double>() == Approx(4000 * widths[i] / 2).epsilon(0.02));
+    }
+  }
+}
+
 TEST_CASE("verify: two runs give byte-identical JSON and the text names every input's origin", "[verify]") {
   TwoFinger gripper;
   const auto a = gripper.run(), b = gripper.run();

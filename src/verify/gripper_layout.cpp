@@ -261,7 +261,8 @@ std::optional<GripperLayout> gripper_layout(const Asset& asset, const Joint& dri
   const Poses& open_poses = spread_upper > spread_lower ? upper : lower;
   if (pad_centre(0, open_poses) > pad_centre(1, open_poses)) std::swap(layout.pads[0], layout.pads[1]);
   layout.closing = axis;
-  layout.lateral = layout.closing.cross(layout.approach).normalized();
+  // closing × lateral = approach: a right-handed frame, which the object's orientation is written from.
+  layout.lateral = layout.approach.cross(layout.closing).normalized();
   return layout;
 }
 

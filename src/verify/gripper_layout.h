@@ -34,7 +34,8 @@ struct GripperLayout {
   std::string root;                  // the base link (welded to the mount)
   double open = 0, closed = 0;       // driven joint positions: the larger gap, the smaller
   // In the base frame: side 0 moves along +closing when the gripper closes, side 1 along −closing;
-  // approach points from the base toward the pads; lateral = closing × approach.
+  // approach points from the base toward the pads; lateral = approach × closing, so that
+  // (closing, lateral, approach) is right-handed.
   Eigen::Vector3d closing = Eigen::Vector3d::UnitX();
   Eigen::Vector3d approach = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d lateral = Eigen::Vector3d::UnitY();
