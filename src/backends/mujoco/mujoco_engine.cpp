@@ -76,6 +76,31 @@ std::string shape_mass_note(const VerifyPlan& plan) {
                      links, format_number(kShapeDensity));
 }
 
+// Mimic joints whose own limits cannot hold the driven range mapped through the mimic: MuJoCo
+// enforces both, so the limit pulls against the mimic constraint and takes torque from the drive.
+std::vector<std::string> mimic_limit_notes(const VerifyPlan& plan) {
+  std::vector<std::string> notes;
+  const Joint& driven = *plan.layout.driven;
+  const double from = std::min(plan.layout.open, plan.layout.closed), to = std::max(plan.layout.open, plan.layout.closed);
+  for (const Joint* mimic : plan.layout.mimics) {
+    if (!mimic->lower || !mimic->upper || mimic->type == JointType::Continuous) continue;
+    const double m = mimic->mimic->multiplier.value, offset = mimic->mimic->offset.value;
+    const double low = std::min(m * from, m * to) + offset, high = std::max(m * from, m * to) + offset;
+    const double lower = mimic->lower->value, upper = mimic->upper->value;
+    constexpr double kTolerance = 1e-6;
+    if (low >= lower - kTolerance && high <= upper + kTolerance) continue;
+    const std::string unit = is_angular(mimic->type) ? "rad" : "m";
+    notes.push_back(fmt::format(
+        "Limits: mimic '{}' maps '{}' from [{}, {}] {} to [{}, {}] {}, outside its own limits [{}, {}] {}; MuJoCo "
+        "enforces both (the limit with its default solref of 0.02 s), so the limit pulls against the mimic and takes "
+        "torque from the drive (asset-lint check: mimic-limit-conflict).",
+        mimic->name.text, driven.name.text, format_number(from, 4), format_number(to, 4),
+        is_angular(driven.type) ? "rad" : "m", format_number(low, 4),
+        format_number(high, 4), unit, format_number(lower, 4), format_number(upper, 4), unit));
+  }
+  return notes;
+}
+
 }  // namespace
 
 verify::EngineInfo MujocoEngine::info(const VerifyPlan& plan) const {
@@ -111,11 +136,14 @@ verify::EngineInfo MujocoEngine::info(const VerifyPlan& plan) const {
                   "spec's μ on the object and on every gripper geom, because MuJoCo takes the larger of the two and "
                   "defaults to 1.",
                   format_number(kImpratio), format_number(2 * plan.timestep, 3)),
-      shape_mass_note(plan),
       fmt::format("Mount: the base link rides a {} kg free body welded to a kinematic (mocap) mount that lifts it; the "
                   "gripper's own links do not collide with each other.",
                   format_number(kMountMass)),
   };
+  // After the mimic joints' line: their limit conflicts; before the mount's: the mass.
+  const auto limits = mimic_limit_notes(plan);
+  info.translation.insert(info.translation.begin() + 4, limits.begin(), limits.end());
+  info.translation.insert(info.translation.end() - 1, shape_mass_note(plan));
   return info;
 }
 
