@@ -185,6 +185,9 @@ std::string variant_edge_cases() {
       attribute("/robot{Physics=PhysX}.physxArticulation:enabledSelfCollisions", "bool", false, Variability::Uniform),
       relationship("/robot{Physics=PhysX}.physics:filteredPairs", {"/robot/base", "/robot/link"}),
       variant("/robot", "Physics", "None", {{"apiSchemas", deleted_schemas}}),
+      // A reference to another crate asset whose set has the same name: the robot's selection
+      // ("arm") then selects in the arm's set too, a variant it lacks, so no arm physics arrives.
+      variant("/robot", "Physics", "arm", {{"references", prepend_reference("./isaac_arm.usd", "/arm")}}),
   };
   const std::string physx = "/robot{Physics=PhysX}";
   append(specs, body(physx + "base", 2.0f, {0.01f, 0.01f, 0.01f}));

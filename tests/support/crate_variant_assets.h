@@ -20,7 +20,8 @@ struct CrateAsset {
 // - usdc/variants/isaac_arm.usd: an Isaac-style arm whose "Physics" variant set selects "PhysX",
 //   the variant holding joints, drives and masses, with float, double, token and string values;
 // - usdc/variants/edge_cases.usd: variant specs in less common places (properties on a variant,
-//   a set on a prim inside a variant, explicit/appended/deleted list ops, an empty selection).
+//   a set on a prim inside a variant, explicit/appended/deleted list ops, payloads, a reference,
+//   an empty selection).
 std::vector<CrateAsset> crate_variant_assets();
 
 }  // namespace assetlint::test

@@ -15,7 +15,7 @@ namespace {
 // Crate's value type numbers (OpenUSD crateDataTypes.h).
 enum Type : std::uint64_t {
   kBool = 1, kFloat = 8, kDouble = 9, kString = 10, kToken = 11, kVec3f = 24, kTokenListOp = 32, kStringListOp = 33,
-  kPathListOp = 34, kTokenVector = 41, kSpecifier = 42, kVariability = 44, kVariantSelectionMap = 45,
+  kPathListOp = 34, kReferenceListOp = 35, kTokenVector = 41, kSpecifier = 42, kVariability = 44, kVariantSelectionMap = 45,
   kPayloadListOp = 55
 };
 
@@ -241,6 +241,10 @@ class Writer {
     b.put(0.0);  // layer offset
     b.put(1.0);  // layer scale
   }
+  void reference_item(Bytes& b, const Reference& r) {
+    payload_item(b, r);
+    b.put<std::uint64_t>(0);  // custom data: an empty dictionary
+  }
 
   std::uint64_t rep(const Value& value) {
     if (const auto* v = std::get_if<bool>(&value)) return inlined(kBool, *v ? 1 : 0);
@@ -288,6 +292,8 @@ class Writer {
     if (const auto* v = std::get_if<TokenListOp>(&value)) return stored(kTokenListOp, list_op_bytes<std::string>(*v, &Writer::token_item));
     if (const auto* v = std::get_if<StringListOp>(&value)) return stored(kStringListOp, list_op_bytes<std::string>(*v, &Writer::string_item));
     if (const auto* v = std::get_if<PathListOp>(&value)) return stored(kPathListOp, list_op_bytes<std::string>(*v, &Writer::path_item));
+    if (const auto* v = std::get_if<ReferenceListOp>(&value))
+      return stored(kReferenceListOp, list_op_bytes<Reference>(*v, &Writer::reference_item));
     const auto& op = std::get<PayloadListOp>(value);
     return stored(kPayloadListOp, list_op_bytes<Payload>(op, &Writer::payload_item));
   }
@@ -462,6 +468,12 @@ StringListOp prepend_strings(std::vector<std::string> items) {
 PayloadListOp prepend_payload(std::string asset, std::string prim) {
   PayloadListOp op;
   op.prepended.push_back({std::move(asset), std::move(prim)});
+  return op;
+}
+
+ReferenceListOp prepend_reference(std::string asset, std::string prim) {
+  ReferenceListOp op;
+  op.prepended.push_back({{std::move(asset), std::move(prim)}});
   return op;
 }
 

@@ -32,6 +32,7 @@ struct Payload {
   std::string asset;
   std::string prim;  // empty: the layer's default prim
 };
+struct Reference : Payload {};  // written without layer offset or custom data
 
 template <class T>
 struct ListOp {
@@ -42,9 +43,10 @@ struct TokenListOp : ListOp<std::string> {};   // apiSchemas
 struct StringListOp : ListOp<std::string> {};  // variantSetNames
 struct PathListOp : ListOp<std::string> {};    // relationship targets
 struct PayloadListOp : ListOp<Payload> {};
+struct ReferenceListOp : ListOp<Reference> {};
 
 using Value = std::variant<bool, Float, Double, Float3, Token, String, Specifier, Variability, TokenVector, Selections,
-                           TokenListOp, StringListOp, PathListOp, PayloadListOp>;
+                           TokenListOp, StringListOp, PathListOp, PayloadListOp, ReferenceListOp>;
 
 struct Spec {
   std::string path;  // "/", "/gripper", "/gripper{PhysX=}", "/gripper{PhysX=Enabled}joint.drive:x"
@@ -69,5 +71,6 @@ Spec variant(const std::string& prim_path, const std::string& set, const std::st
 TokenListOp prepend_tokens(std::vector<std::string> items);
 StringListOp prepend_strings(std::vector<std::string> items);
 PayloadListOp prepend_payload(std::string asset, std::string prim = "");
+ReferenceListOp prepend_reference(std::string asset, std::string prim = "");
 
 }  // namespace assetlint::test::crate
