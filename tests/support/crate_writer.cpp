@@ -57,7 +57,9 @@ std::string encode_ints(const std::vector<Int>& values) {
   SInt previous = 0;
   std::map<SInt, std::size_t> counts;
   for (Int v : values) {
-    const SInt delta = static_cast<SInt>(static_cast<SInt>(v) - previous);
+    // Deltas wrap as unsigned integers do (the reader adds them back the same way).
+    using UInt = std::make_unsigned_t<Int>;
+    const SInt delta = static_cast<SInt>(static_cast<UInt>(v) - static_cast<UInt>(previous));
     deltas.push_back(delta);
     ++counts[delta];
     previous = static_cast<SInt>(v);
