@@ -31,6 +31,7 @@ inline void check_two_finger_holds(const nlohmann::json& report) {
   CHECK(close["object"].is_null());
   CHECK(close["metrics"]["spec_close_time_s"].get<double>() == Approx(0.45));
   CHECK(close["metrics"]["close_time_s"].get<double>() == Approx(0.45).epsilon(0.05));
+  CHECK(close["metrics"]["diverged"] == false);
   CHECK(verify_scene(report, "grasp", 0)["object"]["width_m"].get<double>() == Approx(0.081));
   CHECK(verify_scene(report, "grasp", 1)["object"]["width_m"].get<double>() == Approx(0.045));
   CHECK(verify_scene(report, "grasp", 2)["object"]["width_m"].get<double>() == Approx(0.010));
@@ -40,6 +41,7 @@ inline void check_two_finger_holds(const nlohmann::json& report) {
     CHECK(grasp["grip_force_n"].get<double>() == Approx(20.0).epsilon(0.05));
     CHECK(grasp["peak_penetration_m"].get<double>() < 0.002);
     CHECK(grasp["mimic_error_max"].get<double>() < 1e-3);
+    CHECK(grasp["diverged"] == false);  // its kinetic energy stays far below the drive's 2 × 20 N × 45 mm
     const auto& hold = verify_scene(report, "hold", i)["metrics"];
     CHECK(hold["slip_m"].get<double>() < 0.005);
     CHECK(hold["diverged"] == false);

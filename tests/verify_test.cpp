@@ -43,6 +43,20 @@ const nlohmann::json& scene(const nlohmann::json& report, const std::string& kin
   return assetlint::test::verify_scene(report, kind, nth);
 }
 
+// The fixture's report at h = 4 ms (250 Hz, one iteration) with an undamped drive: it fails (exit 1).
+nlohmann::json undamped_at_coarse_step(const std::string& stiffness, const std::string& max_force) {
+  TwoFinger gripper([&](std::string t) {
+    t = replace_once(t, "position_iterations = 4", "position_iterations = 1");
+    t = replace_once(t, "stiffness = 4000", "stiffness = " + stiffness);
+    t = replace_once(t, "damping = 40", "damping = 0");
+    return replace_once(t, "max_force = 20", "max_force = " + max_force);
+  });
+  const auto r = gripper.run();
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 1);
+  return nlohmann::json::parse(r.out);
+}
+
 }  // namespace
 
 TEST_CASE("verify: twice the required squeeze holds at every width and the close time is stroke/(2·finger speed)",
@@ -75,16 +89,8 @@ TEST_CASE("verify: half the required squeeze slips and fails", "[verify]") {
 }
 
 TEST_CASE("verify: a too-stiff undamped drive at a coarse step fails", "[verify]") {
-  // h = 4 ms (250 Hz, one iteration); k = 4e6 N/m on 0.1 kg: h·nf = 0.004 × 6325 = 25, no damping.
-  TwoFinger gripper([](std::string t) {
-    t = replace_once(t, "position_iterations = 4", "position_iterations = 1");
-    t = replace_once(t, "stiffness = 4000", "stiffness = 4000000");
-    return replace_once(t, "damping = 40", "damping = 0");
-  });
-  const auto r = gripper.run();
-  INFO(r.out << r.err);
-  REQUIRE(r.exit_code == 1);
-  const auto report = nlohmann::json::parse(r.out);
+  // h = 4 ms; k = 4e6 N/m on 0.1 kg: h·nf = 0.004 × 6325 = 25, no damping.
+  const auto report = undamped_at_coarse_step("4000000", "20");
   // The fingers slam into the boxes: every box scene fails, on penetration, jitter or divergence.
   for (const auto& s : report["scenes"]) {
     if (s["kind"] == "close") continue;
@@ -122,6 +128,23 @@ TEST_CASE("verify: the box is turned with the fingers, whichever axis they close
       CHECK(grasp["object"]["width_m"].get<double>() == Approx(widths[i]));
       CHECK(grasp["metrics"]["grip_force_n"].get<double>() == Approx(4000 * widths[i] / 2).epsilon(0.02));
     }
+  }
+}
+
+TEST_CASE("verify: a drive too stiff for the step creates energy, and that is a divergence", "[verify]") {
+  // h = 4 ms (250 Hz, one iteration), k = 2e5 N/m on the 0.1 kg of both fingers, no damping:
+  // ω·h = √(2e5 / 0.1) × 0.004 = 5.7, past the 2 at which the step's explicit spring goes unstable
+  // (the implicit integrator solves only the damping, here none). The state stays finite, clamped
+  // by the 1000 N max force, but with gravity off and the mount still only the drive feeds the
+  // scene, at most 2 × 1000 N × 45 mm = 90 J; the fingers reach hundreds of joules.
+  const auto report = undamped_at_coarse_step("200000", "1000");
+  for (const auto& s : report["scenes"]) {
+    if (s["kind"] != "close" && s["kind"] != "grasp") continue;
+    INFO(s["name"]);
+    CHECK(s["metrics"]["diverged"] == true);
+    const std::string failure = s["failures"][0].get<std::string>();
+    CHECK(failure.find("diverged: kinetic energy reached") != std::string::npos);
+    CHECK(failure.find("more than the 90 J the drive can supply (2 × 1000 N × the 0.045 m stroke)") != std::string::npos);
   }
 }
 

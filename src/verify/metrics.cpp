@@ -14,6 +14,28 @@ Eigen::Vector3d pad_midpoint(const Sample& s) { return 0.5 * (s.pads[0].translat
 
 std::string mm(double metres) { return format_number(metres * 1000, 3) + " mm"; }
 
+// With gravity off and the mount still, only the drive feeds the scene. Its force is bounded
+// by F (the max force, else the spring's pull across the stroke s), so its potential at the
+// start and the work its target's travel adds are each at most F·s: no body may hold more
+// kinetic energy than 2·F·s. More is energy the integration made (a drive too stiff for the
+// step), even when the state stays finite.
+std::optional<std::string> energy_growth(const VerifyPlan& plan, const SceneSpec& scene, const Trajectory& trajectory) {
+  if (scene.gravity || scene.lift_height > 0) return std::nullopt;
+  const double stroke = std::abs(plan.layout.closed - plan.layout.open);
+  const double spring = plan.drive.stiffness * stroke;
+  const double force = plan.drive.max_force ? std::min(*plan.drive.max_force, spring) : spring;
+  const double budget = 2 * force * stroke;
+  const Sample* peak = nullptr;
+  for (const Sample& s : trajectory.samples)
+    if (!peak || s.kinetic_energy > peak->kinetic_energy) peak = &s;
+  if (!peak || !(peak->kinetic_energy > budget)) return std::nullopt;
+  const bool angular = is_angular(plan.layout.driven->type);
+  return fmt::format("kinetic energy reached {} J at {} s, more than the {} J the drive can supply (2 × {} {} × the {} "
+                     "{} stroke): the integration creates energy",
+                     format_number(peak->kinetic_energy, 3), format_number(peak->t, 3), format_number(budget, 3),
+                     format_number(force, 4), angular ? "N·m" : "N", format_number(stroke, 4), angular ? "rad" : "m");
+}
+
 }  // namespace
 
 std::optional<double> close_time(const VerifyPlan& plan, const Trajectory& trajectory) {
@@ -79,6 +101,12 @@ SceneResult judge(const VerifyPlan& plan, const SceneSpec& scene, Trajectory tra
   double mimic = 0;
   for (const Sample& s : samples) mimic = std::max(mimic, s.mimic_error);
   if (!plan.layout.mimics.empty()) m.mimic_error_max = mimic;
+  if (!trajectory.diverged) {
+    if (auto growth = energy_growth(plan, scene, trajectory)) {
+      trajectory.diverged = true;
+      trajectory.divergence = *growth;
+    }
+  }
   m.diverged = trajectory.diverged;
   if (trajectory.diverged) failures.push_back("diverged: " + trajectory.divergence);
 

@@ -17,6 +17,7 @@ struct Sample {
   Eigen::Vector3d object = Eigen::Vector3d::Zero();  // the object's centre (scenes with one)
   double penetration = 0;       // m: the deepest gripper–object contact over the frame's steps (0: none)
   std::array<double, 2> normal_force{0, 0};  // N: each side's contact normal force on the object at the frame's end
+  double kinetic_energy = 0;    // J: of every body in the scene at the frame's end
 };
 
 struct Trajectory {

@@ -200,6 +200,7 @@ std::optional<verify::Trajectory> MujocoEngine::run(const VerifyPlan& plan, cons
     }
   };
   verify::Trajectory trajectory;
+  std::vector<mjtNum> momentum(m->nv);
   const auto sample = [&](double penetration) {
     verify::Sample s;
     s.t = d->time;
@@ -223,6 +224,9 @@ std::optional<verify::Trajectory> MujocoEngine::run(const VerifyPlan& plan, cons
       }
     }
     s.penetration = penetration;
+    // ½·q̇ᵀ·M·q̇ with the step's mass matrix (mj_energyVel left d->energy[1] at 0 in MuJoCo 2.2.2 here).
+    mj_mulM(m, d, momentum.data(), d->qvel);
+    s.kinetic_energy = 0.5 * mju_dot(momentum.data(), d->qvel, m->nv);
     trajectory.samples.push_back(s);
   };
 
