@@ -3,7 +3,8 @@
 // PhysxMimicJointAPI follower, the drive on the joint) and as MJCF
 // (fixtures/verify/two_finger_mjcf: box geoms, a visual-only geom on each finger, an equality
 // coupling, a position actuator) runs the same scenes with the same answers as the URDF one
-// (tests/verify_support.h): 20 N holds the box at every width, 5 N slips.
+// (tests/verify_support.h): 20 N holds the box at every width, 5 N slips. The USD one's crate
+// twin (two_finger.usd) gives the same report.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -173,6 +174,22 @@ TEST_CASE("verify: a finger without collision geometry is an error naming its li
     CHECK(r.err.find("no collision geometry on a finger") != std::string::npos);
     CHECK(r.err.find("'right_finger'") != std::string::npos);
   }
+}
+
+TEST_CASE("verify USD: a crate layer gives the same JSON as its USDA twin", "[verify][usd]") {
+  // two_finger.usd is two_finger.usda written as a binary crate layer by OpenUSD 22.11
+  // (tests/usd_reference/export_layers.mjs --to-crate).
+  const Gripper crate("two_finger_usd", "two_finger.usd"), text("two_finger_usd", "two_finger.usda");
+  const auto a = crate.run(), b = text.run();
+  INFO(a.out << a.err);
+  REQUIRE(a.exit_code == 0);
+  REQUIRE(b.exit_code == 0);
+  auto crate_report = nlohmann::json::parse(a.out);
+  const auto text_report = nlohmann::json::parse(b.out);
+  CHECK(crate_report["file"] == "two_finger.usd");
+  crate_report["file"] = text_report["file"];
+  CHECK(crate_report == text_report);
+  assetlint::test::check_two_finger_holds(crate_report);
 }
 
 TEST_CASE("verify USD: two runs give byte-identical JSON, the drive's origin is the stage", "[verify][usd]") {
