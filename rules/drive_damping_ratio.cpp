@@ -38,21 +38,29 @@ class DriveDampingRatio final : public Rule {
           !below && !driven->acceleration() && rate.solver == physics::Solver::MuJoCo &&
           rate.h() * physics::natural_frequency(driven->stiffness, inertia) > 1 &&
           physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*driven, inertia)) == physics::StepVerdict::Decays;
-      const bool info_only = steadies_stiff_spring;
+      // A load the inertia leaves out only lowers the true ratio: "too high" is then unproven.
+      const bool load_left_out = !below && !drive.load_beyond_inertia.empty();
+      const bool info_only = steadies_stiff_spring || load_left_out;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
-      Diagnostic& d = out.report(at, info_only ? Severity::Info : info_.default_severity,
-                                 fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
-                                                 format_number(ratio, 3), below ? "below" : "above",
-                                                 format_number(below ? low : high),
-                                                 below ? "oscillates around its target" : "moves sluggishly"));
+      Diagnostic& d = out.report(
+          at, info_only ? Severity::Info : info_.default_severity,
+          load_left_out ? fmt::format("drive of {}: damping ratio {} on the joint alone is above {}; with its load it is lower",
+                                      short_name(joint), format_number(ratio, 3), format_number(high))
+                        : fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
+                                      format_number(ratio, 3), below ? "below" : "above", format_number(below ? low : high),
+                                      below ? "oscillates around its target" : "moves sluggishly"));
       d.note(fmt::format("For {}: dr = d / (2·sqrt(k·I)) = {} / (2·sqrt({} × {})) = {} with {}.",
                          joint_label(joint), describe_gain(drive.damping, driven->damping, damping_unit(joint)),
                          describe_gain(drive.stiffness, driven->stiffness, stiffness_unit(joint)),
                          format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
       if (!drive.damping_origin.empty()) d.note(drive.damping_origin + ".");
       if (!driven->acceleration()) d.note(fmt::format("Inertias: {}.", driven->inertias_text()));
+      if (load_left_out)
+        d.note(drive.load_span, fmt::format("The drive's inertia is a lower bound: {}. The ratio with the load hanging "
+                                            "is lower, by how much the file cannot tell; no fix is offered.",
+                                            drive.load_beyond_inertia));
       if (steadies_stiff_spring) {
         const physics::Servo servo = mujoco_servo(*driven, inertia);
         d.note(fmt::format(

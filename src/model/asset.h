@@ -102,6 +102,11 @@ struct Drive {
   std::string damping_unknown;
   // A damping the file does not write but the engine derives (MJCF dampratio): how, with numbers.
   std::string damping_origin;
+  // What the drive also moves that its joint's inertia at rest leaves out (MJCF: a body hung on
+  // a spatial tendon that the joint winds): the judged inertia is then only a lower bound.
+  // Empty when there is none; `load_span` is the element that carries the load.
+  std::string load_beyond_inertia;
+  Span load_span;
   OptQuantity max_force;   // N·m or N; unset = unlimited
   DriveType type = DriveType::Force;
   Span type_span;

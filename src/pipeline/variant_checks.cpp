@@ -25,7 +25,8 @@ struct Pending {
 // What the stage selects in the sets a label names: "PhysX=Disabled", "PhysX: none".
 std::string authored_selection(const std::vector<usda::VariantSetUse>& sets, const std::vector<Choice>& choices) {
   std::string out;
-  for (const auto& [set, variant] : choices) {
+  for (const Choice& choice : choices) {
+    const std::string& set = choice.first;
     auto use = std::find_if(sets.begin(), sets.end(), [&](const usda::VariantSetUse& u) { return u.set == set; });
     if (use == sets.end()) continue;
     out += fmt::format("{}{}", out.empty() ? "" : ", ",
@@ -53,7 +54,8 @@ class VariantChecker {
       usda::ComposeOptions options = options_;
       for (const auto& [set, variant] : p.choices) options.pinned_variants[set] = variant;
       usda::Stage stage = usda::compose_stage(root_, files_, options);
-      const auto& [set, variant] = p.choices.back();
+      const std::string& set = p.choices.back().first;
+      const std::string& variant = p.choices.back().second;
       const bool physics = std::any_of(stage.variant_sets.begin(), stage.variant_sets.end(), [&](const auto& u) {
         return u.set == set && u.selection == variant && u.physics;
       });

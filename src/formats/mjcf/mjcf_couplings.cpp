@@ -6,6 +6,8 @@
 #include <optional>
 #include <string_view>
 
+#include <fmt/format.h>
+
 #include "util/numbers.h"
 
 namespace assetlint::mjcf {
@@ -20,14 +22,14 @@ constexpr double kCouplingWidth = 0.1;
 
 struct Bodies {
   std::set<std::string> mocap;
-  std::map<std::string, std::string> site_body;
+  std::map<std::string, std::string> site_body;  // also wrap geoms: a tendon pulls on both
 };
 
 void walk_bodies(const MjcfSources& sources, const XMLElement* parent, const std::string& body, Bodies& out) {
   for (const XMLElement* el : sources.children(parent)) {
     const std::string_view tag = el->Name();
-    if (tag == "site") {
-      if (const char* name = el->Attribute("name")) out.site_body[name] = body;
+    if (tag == "site" || tag == "geom") {
+      if (const char* name = el->Attribute("name")) out.site_body.emplace(name, body);
     } else if (tag == "body" || tag == "frame") {
       const char* name = el->Attribute("name");
       const std::string here = tag == "frame" ? body : name ? std::string(name) : std::string();
@@ -103,6 +105,33 @@ FixedTendon read_fixed(const MjcfSources& sources, const XMLElement* fixed, cons
   return tendon;
 }
 
+// A spatial tendon that resists being stretched (limited, or with a stiffness), as a rope.
+std::optional<Rope> read_rope(const MjcfSources& sources, const XMLElement* spatial, const Defaults& defaults,
+                              const Compiler& compiler, Values& values, const Bodies& bodies) {
+  const char* cls = spatial->Attribute("class");
+  const auto& defs = defaults.elements(cls && defaults.has_class(cls) ? cls : "main", "tendon");
+  const Attr range = Defaults::lookup(spatial, defs, "range");
+  const bool limited =
+      values.flag(Defaults::lookup(spatial, defs, "limited"), "limited").value_or(static_cast<bool>(range) && compiler.autolimits);
+  const Attr stiffness = Defaults::lookup(spatial, defs, "stiffness");
+  const auto stiffness_value = stiffness ? values.numbers(stiffness, "stiffness", 1) : std::nullopt;
+  const bool springy = stiffness_value && (*stiffness_value)[0] > 0;
+  if (!limited && !springy) return std::nullopt;
+  Rope rope;
+  for (const XMLElement* point : sources.children(spatial)) {
+    const std::string_view tag = point->Name();
+    const char* name = point->Attribute(tag == "site" ? "site" : tag == "geom" ? "geom" : "");
+    if (!name || (tag != "site" && tag != "geom")) continue;
+    const auto found = bodies.site_body.find(std::string(trim(name)));
+    if (found != bodies.site_body.end()) rope.bodies.push_back(found->second);
+  }
+  rope.span = values.element_span(spatial);
+  const char* name = spatial->Attribute("name");
+  rope.label = name ? "spatial tendon '" + std::string(trim(name)) + "'"
+                    : "the spatial tendon at line " + std::to_string(rope.span.line);
+  return rope;
+}
+
 }  // namespace
 
 Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, const Compiler& compiler,
@@ -116,6 +145,10 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
   for (const XMLElement* el : sections) {
     if (std::string_view(el->Name()) != "tendon") continue;
     for (const XMLElement* fixed : sources.children(el)) {
+      if (std::string_view(fixed->Name()) == "spatial") {
+        if (auto rope = read_rope(sources, fixed, defaults, compiler, values, bodies)) out.ropes.push_back(std::move(*rope));
+        continue;
+      }
       if (std::string_view(fixed->Name()) != "fixed") continue;
       FixedTendon tendon = read_fixed(sources, fixed, defaults, compiler, values, asset);
       if (tendon.coupling) out.tendons.push_back(tendon.joints);
@@ -169,6 +202,25 @@ void drive_through_couplings(const Couplings& couplings, Asset& asset) {
           asset.joints[*i].actuation = Actuation::Actuated;
           changed = true;
         }
+    }
+  }
+}
+
+void note_rope_loads(const Couplings& couplings, Asset& asset) {
+  for (const Rope& rope : couplings.ropes) {
+    std::vector<std::vector<std::size_t>> paths;
+    for (const std::string& body : rope.bodies) paths.push_back(path_to_root(asset, body));
+    for (std::size_t j = 0; j < asset.joints.size(); ++j) {
+      Joint& joint = asset.joints[j];
+      if (!joint.drive || !joint.drive->load_beyond_inertia.empty()) continue;
+      const auto moves = [&](const std::vector<std::size_t>& path) { return std::find(path.begin(), path.end(), j) != path.end(); };
+      const bool winds = std::any_of(paths.begin(), paths.end(), moves);
+      // A body that moves on joints of its own, not on this one: what the rope lifts.
+      const auto load = std::find_if(paths.begin(), paths.end(), [&](const auto& path) { return !path.empty() && !moves(path); });
+      if (!winds || load == paths.end()) continue;
+      joint.drive->load_beyond_inertia = fmt::format("it also pulls body '{}' through {}, which its M₀ᵢᵢ leaves out",
+                                                     rope.bodies[static_cast<std::size_t>(load - paths.begin())], rope.label);
+      joint.drive->load_span = rope.span;
     }
   }
 }

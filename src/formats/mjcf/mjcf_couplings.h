@@ -8,6 +8,8 @@
 //     teleoperated arm): every joint between that body and the root moves with it.
 //   - A <connect> or <weld> between two bodies of the robot closes a loop (a four-bar
 //     linkage), and an <equality><joint> couples two joints: their joints belong to a mechanism.
+//   - A spatial tendon that resists stretching (a range or a stiffness) between a body one joint
+//     moves and a body it does not is a rope: the drive that winds it also lifts the other body.
 #include <tinyxml2.h>
 
 #include <set>
@@ -22,12 +24,20 @@
 
 namespace assetlint::mjcf {
 
+// A spatial tendon that pulls when stretched: the bodies its sites sit on (empty: the world).
+struct Rope {
+  std::vector<std::string> bodies;
+  Span span;
+  std::string label;  // "spatial tendon 'cable'" / "the spatial tendon at line 123"
+};
+
 struct Couplings {
   FixedTendons fixed;                              // every named fixed tendon's joints
   std::vector<std::vector<std::string>> tendons;  // the joints of each coupling tendon
   std::vector<std::pair<std::string, std::string>> loops;  // bodies a connect or weld ties together
   std::vector<std::string> mocap_driven;                   // bodies welded or connected to a mocap body
   std::set<std::string> coupled_joints;                    // named by an <equality><joint>
+  std::vector<Rope> ropes;
 };
 
 // Reads the fixed tendons and couplings of a model's top-level sections (after the bodies and
@@ -38,6 +48,10 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
 // Marks as actuated the joints an actuator reaches through a coupling tendon, and the joints a
 // mocap body drives. Runs after the actuators are read, before undriven joints become passive.
 void drive_through_couplings(const Couplings& couplings, Asset& asset);
+
+// Notes on each drive that winds a rope hung with a body the drive's joint does not otherwise
+// move: MuJoCo's M₀ᵢᵢ leaves that body out. Runs after the actuators are read.
+void note_rope_loads(const Couplings& couplings, Asset& asset);
 
 // Marks as part of a linkage the passive joints that a loop, a joint equality or a coupling
 // tendon ties to the rest of the mechanism.

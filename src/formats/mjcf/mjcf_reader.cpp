@@ -91,6 +91,7 @@ class Reader {
       }
     }
     drive_through_couplings(couplings, result_.asset);
+    note_rope_loads(couplings, result_.asset);
     // MJCF lists every actuator: a joint none of them reaches is moved only by its links.
     if (any_actuator && !unnamed_transmission) {
       for (Joint& joint : result_.asset.joints)

@@ -1086,10 +1086,11 @@ class Evaluator {
       if (args[0].is_dict()) items = args[0].as_dict().items;
       else unsupported("dict() from a sequence of pairs");
     }
-    for (const auto& [k, v] : keywords) {
-      auto same = std::find_if(items.begin(), items.end(), [&](const auto& kv) { return python_equal(kv.first, Value(k)); });
-      if (same != items.end()) same->second = v;
-      else items.emplace_back(Value(k), v);
+    for (const auto& [name, value] : keywords) {
+      const Value key(name);
+      auto same = std::find_if(items.begin(), items.end(), [&](const auto& kv) { return python_equal(kv.first, key); });
+      if (same != items.end()) same->second = value;
+      else items.emplace_back(key, value);
     }
     return Value::dict(std::move(items));
   }
