@@ -19,6 +19,7 @@ class DriveDampingRatio final : public Rule {
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double low = rule_option(info_, settings, "min_ratio");
     const double high = rule_option(info_, settings, "max_ratio");
+    const double max_time_constant = rule_option(info_, settings, "max_time_constant");
     const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
       auto driven = model.spring_drive(joint);
@@ -40,7 +41,12 @@ class DriveDampingRatio final : public Rule {
           physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*driven, inertia)) == physics::StepVerdict::Decays;
       // A load the inertia leaves out only lowers the true ratio: "too high" is then unproven.
       const bool load_left_out = !below && !drive.load_beyond_inertia.empty();
-      const bool info_only = steadies_stiff_spring || load_left_out;
+      // Far above critical the drive is a first-order lag: "sluggish" is a claim about how long
+      // the joint takes to follow, and a short time constant refutes it.
+      const double time_constant =
+          1.0 / physics::slowest_decay_rate(physics::Servo{inertia, driven->stiffness, 0.0, driven->damping});
+      const bool follows_quickly = !below && !steadies_stiff_spring && !load_left_out && time_constant <= max_time_constant;
+      const bool info_only = steadies_stiff_spring || load_left_out || follows_quickly;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
@@ -48,7 +54,10 @@ class DriveDampingRatio final : public Rule {
           at, info_only ? Severity::Info : info_.default_severity,
           load_left_out ? fmt::format("drive of {}: damping ratio {} on the joint alone is above {}; with its load it is lower",
                                       short_name(joint), format_number(ratio, 3), format_number(high))
-                        : fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
+          : follows_quickly
+              ? fmt::format("drive of {}: damping ratio {} is above {}, but the joint follows its target within {} s",
+                            short_name(joint), format_number(ratio, 3), format_number(high), format_number(time_constant, 2))
+              : fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
                                       format_number(ratio, 3), below ? "below" : "above", format_number(below ? low : high),
                                       below ? "oscillates around its target" : "moves sluggishly"));
       d.note(fmt::format("For {}: dr = d / (2·sqrt(k·I)) = {} / (2·sqrt({} × {})) = {} with {}.",
@@ -57,6 +66,12 @@ class DriveDampingRatio final : public Rule {
                          format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
       if (!drive.damping_origin.empty()) d.note(drive.damping_origin + ".");
       if (!driven->acceleration()) d.note(fmt::format("Inertias: {}.", driven->inertias_text()));
+      if (!below && !steadies_stiff_spring && !load_left_out)
+        d.note(fmt::format("So far above critical the drive acts as a first-order lag: its slow mode ω·(ζ − √(ζ² − 1)) "
+                           "gives a time constant of {} s (≈ d/k), {} max_time_constant = {} s{}.",
+                           format_number(time_constant, 3), follows_quickly ? "within" : "above",
+                           format_number(max_time_constant),
+                           follows_quickly ? ": the joint is damped hard but not slow" : ": the joint lags its target"));
       if (load_left_out)
         d.note(drive.load_span, fmt::format("The drive's inertia is a lower bound: {}. The ratio with the load hanging "
                                             "is lower, by how much the file cannot tell; no fix is offered.",
@@ -70,12 +85,13 @@ class DriveDampingRatio final : public Rule {
             format_number(rate.h() * physics::natural_frequency(driven->stiffness, inertia), 3), rate.step_text(),
             physics::integrator_name(rate.integrator), format_number(1.0 / physics::slowest_decay_rate(servo), 3)));
       }
-      if (driven->inertia_doubt.empty() && !info_only)
+      const bool fix_offered = !steadies_stiff_spring && !load_left_out;
+      if (driven->inertia_doubt.empty() && fix_offered)
         d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
                            describe_gain(drive.damping, critical, damping_unit(joint))));
       if (!driven->inertia_doubt.empty()) {
         d.note(fmt::format("No fix is offered: {}, so a damping computed from it would be as wrong.", driven->inertia_doubt));
-      } else if (!info_only && drive.damping && drive.damping->span.valid()) {
+      } else if (fix_offered && drive.damping && drive.damping->span.valid()) {
         d.fix = Fix{fmt::format("set damping {} for a damping ratio of 1", describe_gain(drive.damping, critical, damping_unit(joint))),
                     Applicability::Unsafe, {replace_value(*drive.damping, critical, 4)}};
       }
@@ -89,7 +105,10 @@ class DriveDampingRatio final : public Rule {
                  true,
                  RuleOrigin::Check,
                  {{"min_ratio", 0.1, "damping ratios below this are reported (the joint rings)"},
-                  {"max_ratio", 10.0, "damping ratios above this are reported (the joint crawls)"}}};
+                  {"max_ratio", 10.0, "damping ratios above this are reported (the joint crawls)"},
+                  {"max_time_constant", 0.2,
+                   "seconds: a ratio above max_ratio is a warning only when the drive's time constant exceeds this "
+                   "(an info otherwise)"}}};
 };
 
 }  // namespace

@@ -73,6 +73,14 @@ class InertiaInvalid final : public Rule {
   }
 
  private:
+  // Moments this small for the mass (a radius of gyration under a micrometre, entries of 1e-20
+  // on a kilogram link) are a zero tensor written with rounding noise, not a shape.
+  static bool point_mass(const Inertial& inertial) {
+    const Eigen::Vector3d moments = physics::principal_moments(inertial.inertia);
+    const double scale = std::max(std::abs(moments[0]), std::abs(moments[2]));
+    return inertial.mass.value > 0 && scale <= inertial.mass.value * kPointMassGyration * kPointMassGyration;
+  }
+
   // Mass properties MuJoCo computes from a body's geoms describe that geometry exactly: nothing
   // typed by hand to judge.
   static bool from_geometry(const Link& link) { return link.inertial && link.inertial->from_geoms; }
@@ -130,7 +138,8 @@ class InertiaInvalid final : public Rule {
     for (std::size_t i = 0; i < asset.links.size(); ++i) {
       const Link& link = asset.links[i];
       if (where[i].role != Role::BodyStart || !link.inertial || from_geometry(link)) continue;
-      if (physics::pasted_tensor(link.inertial->inertia) || reported[i])
+      // A zero tensor is reported as a point mass (check_link), not a second time as a radius.
+      if (physics::pasted_tensor(link.inertial->inertia) || reported[i] || point_mass(*link.inertial))
         continue;
       const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link),
                                              articulation->sole_rotation_axis(link));
@@ -291,9 +300,7 @@ class InertiaInvalid final : public Rule {
 
     const Eigen::Vector3d moments = physics::principal_moments(inertial.inertia);
     const double scale = std::max(std::abs(moments[0]), std::abs(moments[2]));
-    // Moments this small for the mass (a radius of gyration under a micrometre, entries of
-    // 1e-20 on a kilogram link) are a zero tensor written with rounding noise, not a shape.
-    if (scale <= mass * kPointMassGyration * kPointMassGyration) {
+    if (point_mass(inertial)) {
       // A point mass: welded to another body it only adds m·d² to that body (PhysX and the
       // URDF importers merge welded links), so only a body of its own is a problem.
       if (placement.role == Role::BodyStart && !placement.welded_inertia) report_point_mass(link, placement, out);

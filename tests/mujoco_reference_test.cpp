@@ -279,7 +279,18 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
     const Joint& j1 = *ours.at(e["joint1"].get<std::size_t>());
     const Joint& j2 = *ours.at(e["joint2"].get<std::size_t>());
     const double c0 = e["polycoef"][0], c1 = e["polycoef"][1];
+    bool nonlinear = false;
+    for (std::size_t i = 2; i < e["polycoef"].size(); ++i) nonlinear = nonlinear || e["polycoef"][i].get<double>() != 0;
     ++c.compared["coupling"];
+    // A polynomial coupling is no mimic: the reader must not model its linear part as one.
+    if (nonlinear) {
+      const bool modelled = (j1.mimic && j1.mimic->reference.text == j2.name.text) ||
+                            (j2.mimic && j2.mimic->reference.text == j1.name.text);
+      if (modelled)
+        c.differences.push_back(fmt::format("{}: {} couples '{}' to '{}' by a polynomial, asset-lint models it as a "
+                                            "linear mimic", c.model, element, j1.name.text, j2.name.text));
+      continue;
+    }
     if (j1.mimic && j1.mimic->reference.text == j2.name.text) {
       c.value("coupling multiplier", element, c1, j1.mimic->multiplier.value);
       c.value("coupling offset", element, c0, j1.mimic->offset.value);

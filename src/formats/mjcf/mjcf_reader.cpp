@@ -12,6 +12,7 @@
 #include "formats/mjcf/mjcf_dampratio.h"
 #include "formats/mjcf/mjcf_defaults.h"
 #include "formats/mjcf/mjcf_geom_inertia.h"
+#include "formats/mjcf/mjcf_inertia_bounds.h"
 #include "formats/mjcf/mjcf_values.h"
 #include "formats/xml/xml_scanner.h"
 #include "physics/servo_step.h"
@@ -135,6 +136,9 @@ class Reader {
       compiler_.inertia_group_high = static_cast<int>((*r)[1]);
     }
     if (auto m = values_.numbers(own(el, "settotalmass"), "settotalmass", 1)) compiler_.settotalmass = (*m)[0];
+    if (auto m = values_.numbers(own(el, "boundmass"), "boundmass", 1)) compiler_.boundmass = (*m)[0];
+    if (auto i = values_.numbers(own(el, "boundinertia"), "boundinertia", 1)) compiler_.boundinertia = (*i)[0];
+    if (auto b = values_.flag(own(el, "balanceinertia"), "balanceinertia")) compiler_.balanceinertia = *b;
     if (const char* dir = el->Attribute("meshdir")) compiler_.meshdir = std::string(trim(dir));
     else if (const char* assets = el->Attribute("assetdir"); assets && compiler_.meshdir.empty())
       compiler_.meshdir = std::string(trim(assets));
@@ -253,6 +257,7 @@ class Reader {
     }
     // Without <inertial> (or when the compiler ignores it) MuJoCo sums the geoms' mass and inertia.
     if (!link.inertial && compiler_.inertiafromgeom != "false" && !unknown_class) inertia_from_geoms(link, geoms);
+    if (link.inertial) report_compiler_change(link, apply_compiler_bounds(compiler_, *link.inertial));
     if (joints == 0) {
       Joint weld;
       weld.name = Name{link.name.text + " (welded)", link.name.span};
@@ -303,6 +308,19 @@ class Reader {
     const std::vector<const XMLElement*>* defaults;
     GeomShape shape;
   };
+
+  // The rules judge the mass properties MuJoCo simulates; this says they are not the ones written.
+  void report_compiler_change(const Link& link, const std::string& change) {
+    if (change.empty()) return;
+    const Inertial& in = *link.inertial;
+    result_.diagnostics.push_back({"inertia-invalid", Severity::Info, in.inertia_span.valid() ? in.inertia_span : link.span,
+                                   fmt::format("MuJoCo simulates other mass properties for body '{}' than the file writes",
+                                               link.name.text),
+                                   std::nullopt, {}});
+    result_.diagnostics.back()
+        .note(fmt::format("Its <compiler> settings change them: {}.", change))
+        .note("The checks judge the compiled values. If the part's real inertia matters, write it as measured.");
+  }
 
   void inertia_from_geoms(Link& link, const std::vector<Geom>& geoms) {
     std::vector<physics::MassPart> parts;
@@ -484,8 +502,9 @@ class Reader {
         values_.unsupported(values_.token_span(coef, "polycoef", i),
                             fmt::format("coupling of '{}' is nonlinear (polycoef c{} = {})", joint1, i,
                                         format_number((*c)[i])))
-            .note("asset-lint models only the linear part q1 = c0 + c1·q2 as a mimic (multiplier c1, offset c0).");
-        break;
+            .note("The mimic rules assume q1 = c0 + c1·q2; a polynomial coupling maps the leader's range elsewhere, so "
+                  "they skip this pair rather than judge its linear part.");
+        return;
       }
     // MuJoCo's equality is symmetric: it holds q1 − f(q2) at zero without preferring a side.
     // When only joint1 is actuated, joint2 is the one that follows (q2 = (q1 − c0) / c1).

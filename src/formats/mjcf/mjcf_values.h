@@ -22,6 +22,9 @@ struct Compiler {
   std::string inertiafromgeom = "auto";    // "true": <inertial> is ignored, geoms give mass and inertia
   int inertia_group_low = 0, inertia_group_high = 5;  // inertiagrouprange: the geom groups that carry mass
   double settotalmass = -1;                // > 0: every body's mass and inertia scaled to this total
+  double boundmass = 0;                    // every body's mass raised to at least this
+  double boundinertia = 0;                 // every principal moment raised to at least this
+  bool balanceinertia = false;             // moments breaking A + B >= C replaced by their mean
   std::string meshdir;                     // where mesh files are (meshdir, else assetdir); relative to the model
   Span angle_span;                         // where angle= is written, for notes
 };
