@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -126,7 +127,9 @@ class DriveNaturalFrequency final : public Rule {
     // exists, else the stiffness whose natural frequency is 1/h. Never a stiffer drive.
     const Quantity* force = max_force_of(joint);
     const auto delta = target_delta(joint, settings);
-    const bool force_known = force && force->value > 0 && std::isfinite(force->value);
+    // FLT_MAX is how PhysX and Isaac write "no limit": a force bound only below it.
+    const bool force_known = force && force->value > 0 && std::isfinite(force->value) &&
+                             force->value < 0.5 * static_cast<double>(std::numeric_limits<float>::max());
     double proposed = physics::stiffness_for_frequency(bound, inertia);
     std::string reason = fmt::format("natural frequency 1/h = {} rad/s{}", format_number(bound, 4),
                                      force_known ? "" : "; no max force to keep");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -166,8 +167,9 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
       const auto& defs = defaults.elements(cls && defaults.has_class(cls) ? cls : "main", "equality");
       if (values.flag(Defaults::lookup(c, defs, "active"), "active") == false) continue;
       if (tag == "joint") {
-        for (const char* attr : {"joint1", "joint2"})
-          if (const char* j = c->Attribute(attr)) out.coupled_joints.insert(std::string(trim(j)));
+        const char* j1 = c->Attribute("joint1");
+        const char* j2 = c->Attribute("joint2");
+        if (j1) out.joint_pairs.emplace_back(std::string(trim(j1)), j2 ? std::string(trim(j2)) : std::string());
       } else if (tag == "tendon") {
         for (const char* attr : {"tendon1", "tendon2"})
           if (const char* t = c->Attribute(attr); t && named.contains(std::string(trim(t))))
@@ -226,20 +228,43 @@ void note_rope_loads(const Couplings& couplings, Asset& asset) {
 }
 
 void mark_linkages(const Couplings& couplings, Asset& asset) {
-  const auto link = [&](std::optional<std::size_t> i) {
-    if (i && asset.joints[*i].actuation == Actuation::Passive) asset.joints[*i].actuation = Actuation::Linkage;
+  const auto index = [&](const std::string& name) { return joint_named(asset, name); };
+  const auto drives = [&](std::optional<std::size_t> i) {
+    return i && (asset.joints[*i].actuation == Actuation::Actuated || asset.joints[*i].actuation == Actuation::Linkage);
   };
-  for (const auto& members : couplings.tendons)
-    for (const std::string& name : members) link(joint_named(asset, name));
-  for (const std::string& name : couplings.coupled_joints) link(joint_named(asset, name));
-  // The joints of a loop: on one body's path to the root and not on the other's.
+  bool changed = false;
+  const auto link = [&](std::optional<std::size_t> i) {
+    if (i && asset.joints[*i].actuation == Actuation::Passive) {
+      asset.joints[*i].actuation = Actuation::Linkage;
+      changed = true;
+    }
+  };
+  // The joints each loop ties together: on one body's path to the root and not on the other's.
+  std::vector<std::vector<std::size_t>> loops;
   for (const auto& [a, b] : couplings.loops) {
     const std::vector<std::size_t> pa = path_to_root(asset, a), pb = path_to_root(asset, b);
+    std::vector<std::size_t> members;
     for (const std::size_t i : pa)
-      if (std::find(pb.begin(), pb.end(), i) == pb.end()) link(i);
+      if (std::find(pb.begin(), pb.end(), i) == pb.end()) members.push_back(i);
     for (const std::size_t i : pb)
-      if (std::find(pa.begin(), pa.end(), i) == pa.end()) link(i);
+      if (std::find(pa.begin(), pa.end(), i) == pa.end()) members.push_back(i);
+    loops.push_back(std::move(members));
   }
+  // Until nothing changes: a chain of couplings passes the drive along.
+  do {
+    changed = false;
+    for (const auto& members : couplings.tendons)
+      if (std::any_of(members.begin(), members.end(), [&](const std::string& m) { return drives(index(m)); }))
+        for (const std::string& name : members) link(index(name));
+    for (const auto& [first, second] : couplings.joint_pairs) {
+      if (second.empty()) continue;
+      if (drives(index(first))) link(index(second));
+      if (drives(index(second))) link(index(first));
+    }
+    for (const auto& members : loops)
+      if (std::any_of(members.begin(), members.end(), [&](std::size_t i) { return drives(i); }))
+        for (const std::size_t i : members) link(i);
+  } while (changed);
 }
 
 }  // namespace assetlint::mjcf

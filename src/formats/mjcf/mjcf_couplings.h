@@ -12,7 +12,6 @@
 //     moves and a body it does not is a rope: the drive that winds it also lifts the other body.
 #include <tinyxml2.h>
 
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,7 +35,7 @@ struct Couplings {
   std::vector<std::vector<std::string>> tendons;  // the joints of each coupling tendon
   std::vector<std::pair<std::string, std::string>> loops;  // bodies a connect or weld ties together
   std::vector<std::string> mocap_driven;                   // bodies welded or connected to a mocap body
-  std::set<std::string> coupled_joints;                    // named by an <equality><joint>
+  std::vector<std::pair<std::string, std::string>> joint_pairs;  // joint1, joint2 of an <equality><joint>
   std::vector<Rope> ropes;
 };
 
@@ -54,7 +53,9 @@ void drive_through_couplings(const Couplings& couplings, Asset& asset);
 void note_rope_loads(const Couplings& couplings, Asset& asset);
 
 // Marks as part of a linkage the passive joints that a loop, a joint equality or a coupling
-// tendon ties to the rest of the mechanism.
+// tendon ties to an actuated joint (directly or through other linkage joints). Passive joints
+// coupled only to one another (an oven's knobs and the valve each one turns) stay passive: no
+// actuator drags what they carry.
 void mark_linkages(const Couplings& couplings, Asset& asset);
 
 }  // namespace assetlint::mjcf

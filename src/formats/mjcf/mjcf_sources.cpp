@@ -133,9 +133,12 @@ const XMLElement* MjcfSources::include(const XMLElement* el, const std::vector<s
   if (!doc) {
     std::string error;
     files_.read(key, error);
-    report(rules::kLayerUnresolved.id, rules::kLayerUnresolved.default_severity, span,
-           fmt::format("include '{}' cannot be read: {}", file, error))
-        .note("Its elements are missing from the model.");
+    // MuJoCo refuses a model whose include it cannot open; what the include holds (a <compiler>
+    // angle, the default classes) changes how everything else reads, so nothing is judged.
+    report(rules::kLayerUnresolved.id, Severity::Error, span, fmt::format("include '{}' cannot be read: {}", file, error))
+        .note("MuJoCo does not load a model with a missing include, and its elements (a <compiler> setting, default "
+              "classes) would change how the rest reads: nothing else in the model is checked.");
+    usable = false;
     return nullptr;
   }
   const XMLElement* root = doc->root();
