@@ -46,7 +46,13 @@ class DriveDampingRatio final : public Rule {
       const double time_constant =
           1.0 / physics::slowest_decay_rate(physics::Servo{inertia, driven->stiffness, 0.0, driven->damping});
       const bool follows_quickly = !below && !steadies_stiff_spring && !load_left_out && time_constant <= max_time_constant;
-      const bool info_only = steadies_stiff_spring || load_left_out || follows_quickly;
+      // MuJoCo's frictionloss is dry friction: each swing loses 4·F/k of amplitude, so a swing
+      // the size of a target step dies within a cycle however small the viscous damping.
+      const auto delta = target_delta(joint, settings);
+      const double friction = asset.format == SourceFormat::Mjcf && joint.joint_friction ? joint.joint_friction->value : 0.0;
+      const double amplitude_lost = 4.0 * friction / driven->stiffness;
+      const bool friction_stops_ringing = below && delta && friction > 0 && amplitude_lost >= *delta;
+      const bool info_only = steadies_stiff_spring || load_left_out || follows_quickly || friction_stops_ringing;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
@@ -54,6 +60,9 @@ class DriveDampingRatio final : public Rule {
           at, info_only ? Severity::Info : info_.default_severity,
           load_left_out ? fmt::format("drive of {}: damping ratio {} on the joint alone is above {}; with its load it is lower",
                                       short_name(joint), format_number(ratio, 3), format_number(high))
+          : friction_stops_ringing
+              ? fmt::format("drive of {}: damping ratio {} is below {}, but its frictionloss stops the ringing",
+                            short_name(joint), format_number(ratio, 3), format_number(low))
           : follows_quickly
               ? fmt::format("drive of {}: damping ratio {} is above {}, but the joint follows its target within {} s",
                             short_name(joint), format_number(ratio, 3), format_number(high), format_number(time_constant, 2))
@@ -72,6 +81,13 @@ class DriveDampingRatio final : public Rule {
                            format_number(time_constant, 3), follows_quickly ? "within" : "above",
                            format_number(max_time_constant),
                            follows_quickly ? ": the joint is damped hard but not slow" : ": the joint lags its target"));
+      if (friction_stops_ringing)
+        d.note(joint.joint_friction->span, fmt::format(
+                   "MuJoCo's frictionloss {} N·m acts as dry friction: each swing loses 4·F/k = {} rad of amplitude, "
+                   "more than a {}° step to the target, so the joint settles within a cycle; it stops up to F/k = {} rad "
+                   "short of the target instead.",
+                   format_number(friction), format_number(amplitude_lost, 3), format_number(degrees_from_radians(*delta), 3),
+                   format_number(friction / driven->stiffness, 3)));
       if (load_left_out)
         d.note(drive.load_span, fmt::format("The drive's inertia is a lower bound: {}. The ratio with the load hanging "
                                             "is lower, by how much the file cannot tell; no fix is offered.",

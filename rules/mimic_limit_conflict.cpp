@@ -11,6 +11,8 @@
 namespace assetlint::rules {
 namespace {
 
+constexpr double kRoundingFraction = 1e-3;
+
 bool has_limits(const Joint& j) {
   return j.type != JointType::Continuous && is_single_dof(j.type) && j.lower && j.upper &&
          j.lower->value <= j.upper->value;
@@ -29,7 +31,7 @@ class MimicLimitConflict final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    const double tolerance = rule_option(info_, settings, "tolerance");
+    const double absolute_tolerance = rule_option(info_, settings, "tolerance");
     std::vector<const Joint*> leaders_narrowed;  // one narrowing fix per leader
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !has_limits(joint)) continue;
@@ -40,6 +42,10 @@ class MimicLimitConflict final : public Rule {
       const double a = m * reference->lower->value + offset;
       const double b = m * reference->upper->value + offset;
       const double mapped_low = std::min(a, b), mapped_high = std::max(a, b);
+      // Multipliers and limits are written to three or four digits: an overshoot within a
+      // thousandth of the follower's range is their rounding, not a conflict.
+      const double tolerance =
+          std::max(absolute_tolerance, kRoundingFraction * std::abs(joint.upper->value - joint.lower->value));
       const bool below = mapped_low < joint.lower->value - tolerance;
       const bool above = mapped_high > joint.upper->value + tolerance;
       if (!below && !above) continue;
@@ -132,7 +138,7 @@ class MimicLimitConflict final : public Rule {
                  Severity::Error,
                  true,
                  RuleOrigin::Check,
-                 {{"tolerance", 1e-4, "how far (rad or m) the mapped range may stick out before it is reported"}}};
+                 {{"tolerance", 1e-4, "how far (rad or m) the mapped range may stick out before it is reported, at least a thousandth of the follower's range (rounding)"}}};
 };
 
 }  // namespace

@@ -209,7 +209,7 @@ TEST_CASE("MJCF: a missing include is an error and nothing else in the model is 
   CHECK_FALSE(r.usable);
   REQUIRE(r.diagnostics.size() == 1);
   CHECK(r.diagnostics[0].severity == Severity::Error);
-  CHECK(located(r) == "layer-unresolved 0:1:18 include 'missing.xml' cannot be read: No such file or directory\n");
+  CHECK(located(r) == "layer-unresolved 0:1:24 include 'missing.xml' cannot be read: No such file or directory\n");
 }
 
 TEST_CASE("MJCF: a joint equality leads from its actuated side", "[mjcf]") {
