@@ -11,8 +11,6 @@
 namespace assetlint::rules {
 namespace {
 
-constexpr double kRoundingFraction = 1e-3;
-
 bool has_limits(const Joint& j) {
   return j.type != JointType::Continuous && is_single_dof(j.type) && j.lower && j.upper &&
          j.lower->value <= j.upper->value;
@@ -32,6 +30,7 @@ class MimicLimitConflict final : public Rule {
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double absolute_tolerance = rule_option(info_, settings, "tolerance");
+    const double rounding_fraction = rule_option(info_, settings, "rounding_fraction");
     std::vector<const Joint*> leaders_narrowed;  // one narrowing fix per leader
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !has_limits(joint)) continue;
@@ -45,7 +44,7 @@ class MimicLimitConflict final : public Rule {
       // Multipliers and limits are written to three or four digits: an overshoot within a
       // thousandth of the follower's range is their rounding, not a conflict.
       const double tolerance =
-          std::max(absolute_tolerance, kRoundingFraction * std::abs(joint.upper->value - joint.lower->value));
+          std::max(absolute_tolerance, rounding_fraction * std::abs(joint.upper->value - joint.lower->value));
       const bool below = mapped_low < joint.lower->value - tolerance;
       const bool above = mapped_high > joint.upper->value + tolerance;
       if (!below && !above) continue;
@@ -138,7 +137,9 @@ class MimicLimitConflict final : public Rule {
                  Severity::Error,
                  true,
                  RuleOrigin::Check,
-                 {{"tolerance", 1e-4, "how far (rad or m) the mapped range may stick out before it is reported, at least a thousandth of the follower's range (rounding)"}}};
+                 {{"tolerance", 1e-4, "how far (rad or m) the mapped range may stick out before it is reported"},
+                  {"rounding_fraction", 1e-3,
+                   "an overshoot within this fraction of the follower's range is rounding (0 turns it off)"}}};
 };
 
 }  // namespace

@@ -281,6 +281,7 @@ TEST_CASE("mimic-limit-conflict: offsets shift the mapped range, tolerance optio
   CHECK(of_rule(lint(close), "mimic-limit-conflict").empty());
   Settings strict;
   strict.rule_options["mimic-limit-conflict"]["tolerance"] = 1e-6;
+  strict.rule_options["mimic-limit-conflict"]["rounding_fraction"] = 0;
   const auto strict_found = of_rule(lint(close, strict), "mimic-limit-conflict");
   REQUIRE(strict_found.size() == 1);
   CHECK(strict_found[0].fix->title == "narrow the limits of 'finger_joint' to [0, 0.820255] rad");
