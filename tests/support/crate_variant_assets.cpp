@@ -34,6 +34,14 @@ std::vector<Spec> body(const std::string& path, float mass, Float3 inertia, Fiel
           attribute(path + ".physics:centerOfMass", "point3f", Float3{0.0f, 0.0f, 0.01f})};
 }
 
+// The gripper's base and finger, the same in every layer that authors them: `prefix` is the
+// prim (or variant) path they sit under, ending in '/' or '}'.
+std::vector<Spec> gripper_bodies(const std::string& prefix) {
+  std::vector<Spec> specs = body(prefix + "base_link", 0.3f, {0.0003f, 0.0003f, 0.0003f});
+  append(specs, body(prefix + "finger", 0.0127f, {2.1e-6f, 2.1e-6f, 1.3e-6f}));
+  return specs;
+}
+
 struct Drive {
   std::optional<float> stiffness;  // unauthored where nested variants author it
   float damping, max_force;
@@ -59,8 +67,7 @@ std::string physx_payload() {
                                  "5700 N·m/rad (99.48 N·m/deg).",
                                  "gripper")),
       prim("/gripper", Specifier::Over, "", {{"apiSchemas", prepend_tokens({"PhysicsArticulationRootAPI"})}})};
-  append(specs, body("/gripper/base_link", 0.3f, {0.0003f, 0.0003f, 0.0003f}));
-  append(specs, body("/gripper/finger", 0.0127f, {2.1e-6f, 2.1e-6f, 1.3e-6f}));
+  append(specs, gripper_bodies("/gripper/"));
   append(specs, finger_joint("/gripper/finger_joint", "/gripper", {99.48f, 0.00106f, 24.0f}));
   return write_crate(specs);
 }
@@ -90,8 +97,7 @@ std::string simready_gripper() {
       variant("/gripper", "MuJoCo", "Enabled", {{"payload", prepend_payload("./runnables/physics/mujoco.usda", "/gripper")}}),
   };
   const std::string newton = "/gripper{Newton=Enabled}";
-  append(specs, body(newton + "base_link", 0.3f, {0.0003f, 0.0003f, 0.0003f}));
-  append(specs, body(newton + "finger", 0.0127f, {2.1e-6f, 2.1e-6f, 1.3e-6f}));
+  append(specs, gripper_bodies(newton));
   // The stiffness comes from the nested set: a nested variant is weaker than the variant
   // that holds it, so it can only author what that variant leaves unauthored.
   append(specs, finger_joint(newton + "finger_joint", "/gripper", {std::nullopt, 0.00106f, 24.0f}));
