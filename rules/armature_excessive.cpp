@@ -1,8 +1,10 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "physics/drive.h"
 #include "rules/drive_support.h"
@@ -45,6 +47,10 @@ class ArmatureExcessive final : public Rule {
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
       Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, model.spring_drive(joint)};
       if (crutch(c)) c.shared = shared_by_a_steady_drive(model, asset, joint);
+      if (joint.actuation == Actuation::Passive && touches_nothing(model.articulation(), asset, joint)) {
+        report_isolated(c, out);
+        continue;
+      }
       report(c, out);
     }
   }
@@ -102,6 +108,43 @@ class ArmatureExcessive final : public Rule {
     double natural_frequency;  // rad/s, without the armature
     double inertia;            // the judged inertia less the armature
   };
+
+  // A passive joint that hangs from the world and moves nothing that collides (a goal marker a
+  // task script places): no contact, no joint and no actuator carries its motion to another
+  // body, so its inertia, armature included, changes how that body alone moves.
+  static bool touches_nothing(const physics::Articulation& articulation, const Asset& asset, const Joint& joint) {
+    const physics::Body* parent = articulation.side(joint, 0);
+    if (parent && !parent->world) return false;
+    const Link* child = asset.side_link(joint, 1);
+    if (!child) return false;
+    std::vector<const Link*> pending{child};
+    std::vector<const Link*> seen;
+    while (!pending.empty()) {
+      const Link* link = pending.back();
+      pending.pop_back();
+      if (std::find(seen.begin(), seen.end(), link) != seen.end()) continue;
+      seen.push_back(link);
+      if (!link->collisions.empty()) return false;
+      for (const Joint* next : asset.joints_at(link->name.text)) {
+        if (next->parent.text != link->name.text) continue;
+        if (next->actuation != Actuation::Passive && next->actuation != Actuation::Unknown) return false;
+        if (const Link* below = asset.side_link(*next, 1)) pending.push_back(below);
+      }
+    }
+    return true;
+  }
+
+  void report_isolated(const Candidate& c, Reporter& out) const {
+    const Joint& joint = c.joint;
+    Diagnostic& d = out.report(joint.armature->span.valid() ? joint.armature->span : joint.name.span, Severity::Info,
+                               fmt::format("armature {} {} of {} ({}× {}) on a body nothing touches",
+                                           format_number(c.armature, 3), c.unit(), short_name(joint),
+                                           format_number(c.ratio, 3), c.moved.name()));
+    d.note(moved_text(c));
+    d.note("The joint hangs from the world, no actuator reaches it, and nothing it moves has a collision shape: no "
+           "contact, joint or drive passes its motion to another body, so the armature only slows this body (a "
+           "marker or target a script places). Remove it if the body should move freely.");
+  }
 
   static double reflected(const Motor& motor) { return motor.gear_ratio * motor.gear_ratio * motor.rotor_inertia.value; }
 

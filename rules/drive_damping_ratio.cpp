@@ -48,10 +48,17 @@ class DriveDampingRatio final : public Rule {
       const bool follows_quickly = !below && !steadies_stiff_spring && !load_left_out && time_constant <= max_time_constant;
       // MuJoCo's frictionloss is dry friction: each swing loses 4·F/k of amplitude, so a swing
       // the size of a target step dies within a cycle however small the viscous damping.
+      // The step a swing starts from: the guide's target delta on a hinge; a slide has none, but
+      // no step is larger than its range.
       const auto delta = target_delta(joint, settings);
+      const std::optional<double> range_width =
+          joint.lower && joint.upper && joint.upper->value > joint.lower->value
+              ? std::optional<double>(joint.upper->value - joint.lower->value)
+              : std::nullopt;
+      const std::optional<double> step = delta ? delta : range_width;
       const double friction = asset.format == SourceFormat::Mjcf && joint.joint_friction ? joint.joint_friction->value : 0.0;
       const double amplitude_lost = 4.0 * friction / driven->stiffness;
-      const bool friction_stops_ringing = below && delta && friction > 0 && amplitude_lost >= *delta;
+      const bool friction_stops_ringing = below && step && friction > 0 && amplitude_lost >= *step;
       const bool info_only = steadies_stiff_spring || load_left_out || follows_quickly || friction_stops_ringing;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
@@ -81,13 +88,25 @@ class DriveDampingRatio final : public Rule {
                            format_number(time_constant, 3), follows_quickly ? "within" : "above",
                            format_number(max_time_constant),
                            follows_quickly ? ": the joint is damped hard but not slow" : ": the joint lags its target"));
-      if (friction_stops_ringing)
+      if (friction_stops_ringing && delta)
         d.note(joint.joint_friction->span, fmt::format(
                    "MuJoCo's frictionloss {} N·m acts as dry friction: each swing loses 4·F/k = {} rad of amplitude, "
                    "more than a {}° step to the target, so the joint settles within a cycle; it stops up to F/k = {} rad "
                    "short of the target instead.",
                    format_number(friction), format_number(amplitude_lost, 3), format_number(degrees_from_radians(*delta), 3),
                    format_number(friction / driven->stiffness, 3)));
+      else if (friction_stops_ringing)
+        d.note(joint.joint_friction->span, fmt::format(
+                   "MuJoCo's frictionloss {} N acts as dry friction: each swing loses 4·F/k = {} m of amplitude, more "
+                   "than the joint's whole range of {} m, so no step can start a second swing; {}.",
+                   format_number(friction), format_number(amplitude_lost, 3), format_number(*range_width, 3),
+                   friction / driven->stiffness < *range_width
+                       ? fmt::format("the joint stops up to F/k = {} m short of its target instead",
+                                     format_number(friction / driven->stiffness, 3))
+                       : fmt::format("F/k = {} m is more than the range too: the servo's force never exceeds the "
+                                     "friction, and the joint moves only as far as MuJoCo's soft friction constraint "
+                                     "(solreffriction) lets it creep",
+                                     format_number(friction / driven->stiffness, 3))));
       if (load_left_out)
         d.note(drive.load_span, fmt::format("The drive's inertia is a lower bound: {}. The ratio with the load hanging "
                                             "is lower, by how much the file cannot tell; no fix is offered.",

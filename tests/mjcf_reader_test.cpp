@@ -262,6 +262,25 @@ TEST_CASE("MJCF: errors carry file, line and column", "[mjcf]") {
   CHECK(broken.diagnostics[0].span.line == 3);
 }
 
+TEST_CASE("MJCF: every use of classes a loader would add is one error with a note per use", "[mjcf]") {
+  const ReadResult r = read(
+      "<mujoco><worldbody><body name='a'>\n"
+      "<joint name='j1' class='large'/>\n"
+      "<body name='b'><joint name='j2' class='small'/>\n"
+      "<body name='c'><joint name='j3' class='large'/></body></body>\n"
+      "</body></worldbody></mujoco>");
+  REQUIRE(r.diagnostics.size() == 1);
+  const Diagnostic& d = r.diagnostics[0];
+  CHECK(d.rule == "parse-error");
+  CHECK(d.span.line == 2);
+  CHECK(d.message == "2 unknown default classes ('large', 'small'), used 3 times");
+  REQUIRE(d.notes.size() == 3);
+  CHECK(d.notes[1].message == "'small' is not defined either");
+  CHECK(d.notes[1].span.line == 3);
+  CHECK(d.notes[2].message == "'large' used again");
+  CHECK(d.notes[2].span.line == 4);
+}
+
 TEST_CASE("MJCF: nonlinear couplings and tendon actuators are reported as not modelled", "[mjcf]") {
   const ReadResult r = read(R"(<mujoco><worldbody><body name="a"><joint name="p"/>
 <body name="b"><joint name="q"/></body></body></worldbody>

@@ -118,7 +118,7 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   const std::string_view tag = el->Name();
   const char* cls = el->Attribute("class");
   if (cls && !defaults.has_class(cls)) {
-    values.error(values.value_span(own(el, "class"), "class"), fmt::format("unknown default class '{}'", cls));
+    values.unknown_class(values.value_span(own(el, "class"), "class"), "class", cls);
     return;
   }
   Params p;

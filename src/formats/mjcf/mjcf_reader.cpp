@@ -178,7 +178,7 @@ class Reader {
     const char* cls = el->Attribute("class");
     if (!cls) return childclass;
     if (!defaults_.has_class(cls)) {
-      values_.error(values_.value_span(own(el, "class"), "class"), fmt::format("unknown default class '{}'", cls));
+      values_.unknown_class(values_.value_span(own(el, "class"), "class"), "class", cls);
       return std::nullopt;
     }
     return std::string(cls);
@@ -194,7 +194,7 @@ class Reader {
     const char* c = el->Attribute("childclass");
     if (!c) return around;
     if (defaults_.has_class(c)) return c;
-    values_.error(values_.value_span(own(el, "childclass"), "childclass"), fmt::format("unknown default class '{}'", c));
+    values_.unknown_class(values_.value_span(own(el, "childclass"), "childclass"), "childclass", c);
     return around;
   }
 
@@ -471,7 +471,7 @@ class Reader {
   void read_equality_joint(const XMLElement* el) {
     const char* cls = el->Attribute("class");
     if (cls && !defaults_.has_class(cls)) {
-      values_.error(values_.value_span(own(el, "class"), "class"), fmt::format("unknown default class '{}'", cls));
+      values_.unknown_class(values_.value_span(own(el, "class"), "class"), "class", cls);
       return;
     }
     const auto& defs = defaults_.elements(cls ? cls : "main", "equality");

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 
 #include "rules/reader_rules.h"
@@ -21,6 +22,30 @@ Diagnostic& Values::unsupported(const Span& span, std::string message) {
   out_.push_back({std::string(rules::kMjcfUnsupported.id), rules::kMjcfUnsupported.default_severity, span,
                   std::move(message), std::nullopt, {}});
   return out_.back();
+}
+
+void Values::unknown_class(const Span& span, std::string_view attribute, std::string_view cls) {
+  ++unknown_class_uses_;
+  const bool new_name = std::find(unknown_classes_.begin(), unknown_classes_.end(), cls) == unknown_classes_.end();
+  if (new_name) unknown_classes_.emplace_back(cls);
+  if (!unknown_class_error_) {
+    error(span, fmt::format("unknown default class '{}'", cls))
+        .note(fmt::format("MuJoCo's compiler refuses the model at the first {}= that names no <default class>; "
+                          "a loader that adds the class before compiling makes it valid.",
+                          attribute));
+    unknown_class_error_ = out_.size() - 1;
+    return;
+  }
+  Diagnostic& d = out_[*unknown_class_error_];
+  d.note(span, new_name ? fmt::format("'{}' is not defined either", cls) : fmt::format("'{}' used again", cls));
+  std::string names;
+  for (std::size_t i = 0; i < unknown_classes_.size() && i < 3; ++i)
+    names += (i == 0 ? "'" : ", '") + unknown_classes_[i] + "'";
+  if (unknown_classes_.size() > 3) names += ", …";
+  d.message = unknown_classes_.size() == 1
+                  ? fmt::format("unknown default class {}, used {} times", names, unknown_class_uses_)
+                  : fmt::format("{} unknown default classes ({}), used {} times", unknown_classes_.size(), names,
+                                unknown_class_uses_);
 }
 
 std::optional<std::vector<double>> Values::numbers(const Attr& a, const char* name, std::size_t count) {

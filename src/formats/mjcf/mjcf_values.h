@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "formats/mjcf/mjcf_defaults.h"
@@ -51,6 +52,10 @@ class Values {
 
   Diagnostic& error(const Span& span, std::string message);
   Diagnostic& unsupported(const Span& span, std::string message);
+  // A class attribute naming no default class. MuJoCo refuses the model at the first one;
+  // every later use becomes a note on that one error, so a file completed by a loader that
+  // adds its classes reads as the one fact it is.
+  void unknown_class(const Span& span, std::string_view attribute, std::string_view cls);
 
  private:
   void note_use(const Attr& a, const Span& span);
@@ -58,6 +63,9 @@ class Values {
   const MjcfSources& sources_;
   std::vector<Diagnostic>& out_;
   std::map<std::pair<FileId, std::size_t>, InheritedLiteral> inherited_;
+  std::optional<std::size_t> unknown_class_error_;  // index into out_
+  std::vector<std::string> unknown_classes_;        // in order of first use
+  std::size_t unknown_class_uses_ = 0;
 };
 
 // The rotation an element writes with quat, axisangle, euler, xyaxes or zaxis (identity when none).
