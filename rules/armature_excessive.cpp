@@ -115,6 +115,7 @@ class ArmatureExcessive final : public Rule {
   static bool touches_nothing(const physics::Articulation& articulation, const Asset& asset, const Joint& joint) {
     const physics::Body* parent = articulation.side(joint, 0);
     if (parent && !parent->world) return false;
+    if (joint.is_mimic() || !asset.mimic_followers(joint.name.text).empty()) return false;  // a joint equality
     const Link* child = asset.side_link(joint, 1);
     if (!child) return false;
     std::vector<const Link*> pending{child};
