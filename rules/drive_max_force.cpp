@@ -155,13 +155,25 @@ class DriveMaxForce final : public Rule {
     const OptQuantity& friction = c.joint.joint_friction;
     if (!friction || !friction->span.valid() || !(friction->value > 0) || !(effort.value > 0)) return;
     if (effort.value > friction->value * (1 + 1e-9)) return;
+    // MuJoCo bounds only actuator forces by actuatorfrcrange: a joint moved by an equality, a
+    // loop or contact is not held back by its actuators' bound.
+    const bool mjcf = c.asset.format == SourceFormat::Mjcf;
+    if (mjcf && c.joint.actuation != Actuation::Actuated) return;
     const bool equal = effort.value >= friction->value * (1 - 1e-9);
     Diagnostic& d = c.out.report(friction->span, Severity::Warning,
-                                 fmt::format("friction {} of {} {} its effort limit: it can never move", describe(*friction),
-                                             joint_label(c.joint), equal ? "equals" : "exceeds"));
-    d.note(effort.span, fmt::format("The effort limit is {}; consumers that apply <dynamics friction> as Coulomb friction "
-                                    "(Gazebo, through SDFormat's joint friction) need more than that to start the joint.",
-                                    describe(effort)));
+                                 fmt::format("friction {} of {} {} its {}: {}", describe(*friction), joint_label(c.joint),
+                                             equal ? "equals" : "exceeds", mjcf ? "actuator force bound" : "effort limit",
+                                             mjcf ? "its actuators can never move it" : "it can never move"));
+    if (mjcf)
+      d.note(effort.span, fmt::format("MuJoCo clamps the actuator force on this joint to {}, and its frictionloss is a "
+                                      "constraint force of up to {} opposing any motion: the actuators alone cannot "
+                                      "start the joint.",
+                                      describe(effort), describe(*friction)));
+    else
+      d.note(effort.span, fmt::format("The effort limit is {}; consumers that apply <dynamics friction> as Coulomb "
+                                      "friction (Gazebo, through SDFormat's joint friction) need more than that to start "
+                                      "the joint.",
+                                      describe(effort)));
     if (equal)
       d.note("The same number in effort and friction is usually one value typed into every field: take both from the "
              "actuator's data sheet.");
