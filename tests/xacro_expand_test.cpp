@@ -146,8 +146,8 @@ TEST_CASE("xacro substitution arguments: arg, eval, env, optenv, find, dirname",
   CHECK(has(e, "d=\"fall back\""));
   auto undefined = expand(R"xml(<x a="$(arg nope)"/>)xml");
   CHECK(undefined.error.find("Undefined substitution argument nope") == 0);
-  auto unknown = expand(R"xml(<x a="$(anon x)"/>)xml");
-  CHECK(unknown.error == "unsupported in $(…): anon");
+  auto unknown = expand(R"xml(<x a="$(pwd)"/>)xml");
+  CHECK(unknown.error.find("Unknown substitution command [pwd]") == 0);
 
   test::TempDir dir;
   std::filesystem::create_directories(dir.path() / "ws" / "my_pkg" / "urdf");
@@ -166,6 +166,45 @@ TEST_CASE("xacro substitution arguments: arg, eval, env, optenv, find, dirname",
   CHECK(has(found, "<link name=\"a\""));
   CHECK(has(found, "<link name=\"b\""));
   CHECK(has(found, (dir.path() / "ws" / "robot").string()));  // $(dirname) is the processed file's
+}
+
+TEST_CASE("xacro $(anon name): one reproducible name per name", "[xacro]") {
+  auto e = expand(R"xml(<node a="$(anon cam)" b="$(anon cam)/x" c="$(anon imu)" d="$(eval anon('cam'))"/>)xml");
+  CHECK(e.error.empty());
+  CHECK(has(e, R"(a="cam_anon" b="cam_anon/x" c="imu_anon" d="cam_anon")"));
+  CHECK(expand(R"xml(<x a="$(anon)"/>)xml").error == "$(anon var) must specify a name [anon]");
+  CHECK(expand(R"xml(<x a="$(anon a b)"/>)xml").error == "$(anon var) may only specify one name [anon a b]");
+}
+
+TEST_CASE("xacro drops the comments right before a construct, up to a blank line or the last construct", "[xacro]") {
+  auto e = expand(R"xml(<!-- kept: a blank line follows -->
+
+<!-- dropped: documents the property -->
+<!-- dropped too -->
+<xacro:property name="p" value="1"/>
+<xacro:if value="true"><!-- kept: ends the conditional's content --></xacro:if>
+<!-- dropped: documents the macro -->
+<xacro:macro name="m"><!-- kept: from the macro --></xacro:macro>
+<xacro:m/>)xml");
+  CHECK(e.error.empty());
+  CHECK(has(e, "kept: a blank line follows"));
+  CHECK(has(e, "kept: ends the conditional's content"));
+  CHECK(has(e, "kept: from the macro"));
+  CHECK(e.text.find("dropped") == std::string::npos);
+}
+
+TEST_CASE("xacro list comprehensions over YAML lists and properties", "[xacro]") {
+  test::TempDir dir;
+  test::write_file(dir.path() / "fingers.yaml", "- name: left\n  offset: {y: 0.02}\n- name: right\n  offset: {y: -0.02}\n");
+  test::write_file(dir.path() / "r.xacro", R"xml(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+<xacro:property name="fingers" value="${xacro.load_yaml('fingers.yaml')}"/>
+<xacro:property name="names" value="${[f.name + '_finger' for f in fingers if f.offset.y > 0]}"/>
+<x ys="${[10 * f.offset.y for f in fingers]}" names="${names}" n="${len([c for c in 'abc' if c != 'b'])}"/></robot>)xml");
+  auto e = expand_file(dir.path() / "r.xacro");
+  CHECK(e.error.empty());
+  CHECK(has(e, R"(ys="[0.2, -0.2]")"));
+  CHECK(has(e, R"(names="['left_finger']")"));
+  CHECK(has(e, R"(n="2")"));
 }
 
 TEST_CASE("xacro includes: relative paths, cycles named with their chain", "[xacro]") {

@@ -120,9 +120,31 @@ TEST_CASE("xacro expressions: lists, tuples, dicts and indexing", "[xacro]") {
   CHECK(eval("[1, 'a']") == "[1, 'a']");
 }
 
+TEST_CASE("xacro expressions: list comprehensions", "[xacro]") {
+  CHECK(eval("[i * a for i in range(3)]") == "[0, 2, 4]");
+  CHECK(eval("[i for i in range(6) if i % 2 if i > 1]") == "[3, 5]");
+  CHECK(eval("[c.upper() for c in 'ab']") == "['A', 'B']");
+  CHECK(eval("[k for k in d]") == "['k']");
+  CHECK(eval("[v + 1 for k, v in d.items()]") == "[8]");
+  CHECK(eval("[x * y for x in (1, 2) for y in [10, 100]]") == "[10, 100, 20, 200]");
+  CHECK(eval("[(a, b) for [a, (b)] in [[1, 2]]]") == "[(1, 2)]");
+  CHECK(eval("[[j for j in range(i)] for i in range(3)]") == "[[], [0], [0, 1]]");
+  CHECK(eval("[l[i] for i in [2, 0]]") == "['z', 1]");
+  // The loop variable hides the property `a` inside, and only inside.
+  CHECK(eval("([a for a in 'xy'], a)") == "(['x', 'y'], 2)");
+  CHECK(eval("sum([x for x in [0.5, 0.25]])") == "0.75");
+  CHECK(error_of("[i for i in 3]") == "TypeError: 'int' object is not iterable");
+  CHECK(error_of("[p for p, q in [1]]").find("TypeError") == 0);
+  CHECK(error_of("[p for p, q in ['abc']]") == "ValueError: too many values to unpack (expected 2)");
+  CHECK(error_of("[i for i in]") == "invalid syntax at ']'");
+  CHECK(error_of("[i for 1 in l]") == "invalid syntax at 'number'");
+  CHECK(error_of("[i for i in range(2000) for j in range(2000)]").find("steps") != std::string::npos);
+}
+
 TEST_CASE("xacro expressions: what is outside the subset is named, never guessed", "[xacro]") {
   CHECK(error_of("lambda x: x") == "unsupported in ${…}: lambda");
-  CHECK(error_of("[i for i in l]") == "unsupported in ${…}: list comprehension");
+  CHECK(error_of("{k: 1 for k in d}") == "unsupported in ${…}: dictionary comprehension");
+  CHECK(error_of("sum(i for i in l)") == "unsupported in ${…}: generator expression");
   CHECK(error_of("f'{a}'") == "unsupported in ${…}: f-string");
   CHECK(error_of("a | 1") == "unsupported in ${…}: bitwise operator '|'");
   CHECK(error_of("__import__('os')").find("invalid name") != std::string::npos);

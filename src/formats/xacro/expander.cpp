@@ -199,6 +199,11 @@ class GlobalScope : public ExpressionScope {
   std::string abs_filename(const std::string&) override { throw EvalError("unsupported here: xacro.abs_filename"); }
 };
 
+// roslaunch resolves $(anon name) to the name followed by the host name, the process id and a
+// random number, the same for one name throughout a run; a fixed suffix keeps that contract
+// and makes the expansion reproducible.
+std::string anonymous_name(const std::string& name) { return name + "_anon"; }
+
 // roslaunch's convert_value(…, 'auto'): what $(eval …) makes of an argument's text.
 Value auto_convert(const std::string& text) {
   if (text.find('.') != std::string::npos) {
@@ -241,6 +246,7 @@ class Expander {
         root.attributes.push_back(attribute(a, &globals));
       }
       process_children(tree.root, &globals, &macros, root);
+      remove_comment_stops(root);
       expansion.files = files_read_;
       expansion.arguments = arguments_;
       result.expansion = std::move(expansion);
@@ -510,9 +516,13 @@ class Expander {
       return fallback;
     }
     if (command == "dirname") return current_dir();
-    if (command == "anon") fail(span, "unsupported in $(…): anon");
+    if (command == "anon") {
+      if (words.size() < 2) fail(span, fmt::format("$(anon var) must specify a name [{}]", content));
+      if (words.size() > 2) fail(span, fmt::format("$(anon var) may only specify one name [{}]", content));
+      return anonymous_name(words[1]);
+    }
     fail(span, fmt::format("Unknown substitution command [{}]. Valid commands are ['find', 'env', 'optenv', 'dirname', "
-                           "'arg', 'eval']",
+                           "'anon', 'arg', 'eval']",
                            content));
   }
 
@@ -582,10 +592,25 @@ class Expander {
     bool eval_comments = false;
     for (const XNode& child : parent.children) {
       switch (child.kind) {
-        case XNode::Kind::Element:
+        case XNode::Kind::Element: {
           eval_comments = false;
-          process_element(view_of(child), symbols, macros, out);
+          const ElementView view = view_of(child);
+          const bool last = &child == &parent.children.back();
+          if (!drops_previous_comments(view.name)) {
+            process_element(view, symbols, macros, out);
+            break;
+          }
+          drop_previous_comments(out);
+          // xacro marks the stop after a conditional before its content is expanded (an
+          // element inside moves the mark), after a macro call or include once it is.
+          const bool mark_after = view.name == "xacro:include" || !xacro_construct(view.name);
+          const std::uint64_t mark = mark_after ? 0 : ++comment_stop_;
+          process_element(view, symbols, macros, out);
+          if (last) break;
+          if (mark_after) place_comment_stop(out, ++comment_stop_);
+          else if (mark == comment_stop_) place_comment_stop(out, mark);
           break;
+        }
         case XNode::Kind::Text: {
           Tracked t = eval_text(child.name, symbols, child.span);
           std::string text = python_str(t.value);
@@ -619,28 +644,54 @@ class Expander {
     fail(v.node->span, fmt::format("{}: missing required attribute '{}'", v.name, name));
   }
 
+  static bool xacro_construct(std::string_view name) {
+    for (const char* n : {"xacro:if", "xacro:unless", "xacro:property", "xacro:macro", "xacro:arg", "xacro:include"})
+      if (name == n) return true;
+    return false;
+  }
+  static bool drops_previous_comments(std::string_view name) {
+    return name.starts_with("xacro:") && name != "xacro:insert_block" && name != "xacro:element" && name != "xacro:attribute";
+  }
+
   // remove_previous_comments: xacro drops the comments right before a macro, property,
-  // include, argument, conditional or macro call (they documented the xacro construct).
-  static void drop_previous_comments(OutNode& out) {
+  // include, argument, conditional or macro call (they documented the xacro construct), walking
+  // back over single line breaks. It stops at a blank line, at anything else, and at the mark it
+  // leaves after the xacro construct it handled last (one mark, moved each time).
+  void drop_previous_comments(OutNode& out) const {
     auto& c = out.children;
-    std::size_t i = c.size();
-    while (i > 0) {
-      std::size_t j = i - 1;
-      if (c[j].kind == XNode::Kind::Text && trim(c[j].name).empty() && std::count(c[j].name.begin(), c[j].name.end(), '\n') <= 1) {
-        if (j == 0) return;
-        --j;
+    const auto previous = [&](std::size_t k) -> std::optional<std::size_t> {
+      while (k > 0) {
+        --k;
+        if (c[k].comment_stop == 0 || c[k].comment_stop == comment_stop_) return k;  // a moved mark is gone
       }
-      if (c[j].kind != XNode::Kind::Comment) return;
-      c.erase(c.begin() + static_cast<std::ptrdiff_t>(j));
-      i = j;
+      return std::nullopt;
+    };
+    std::optional<std::size_t> j = previous(c.size());
+    while (j) {
+      const OutNode& n = c[*j];
+      if (n.kind == XNode::Kind::Text && n.comment_stop == 0 && trim(n.name).empty() && std::count(n.name.begin(), n.name.end(), '\n') <= 1)
+        j = previous(*j);
+      if (!j || c[*j].kind != XNode::Kind::Comment) return;
+      c.erase(c.begin() + static_cast<std::ptrdiff_t>(*j));
+      j = previous(*j);
     }
+  }
+
+  void place_comment_stop(OutNode& out, std::uint64_t mark) const {
+    OutNode stop;
+    stop.kind = XNode::Kind::Text;
+    stop.comment_stop = mark;
+    out.children.push_back(std::move(stop));
+  }
+
+  static void remove_comment_stops(OutNode& node) {
+    std::erase_if(node.children, [](const OutNode& c) { return c.comment_stop != 0; });
+    for (OutNode& c : node.children) remove_comment_stops(c);
   }
 
   void process_element(const ElementView& v, Table* symbols, MacroTable* macros, OutNode& out) {
     Depth depth(*this, v.node->span);
     const std::string& name = v.name;
-    if (name.starts_with("xacro:") && name != "xacro:insert_block" && name != "xacro:element" && name != "xacro:attribute")
-      drop_previous_comments(out);
     if (name == "xacro:insert_block") return insert_block(v, symbols, macros, out);
     if (name == "xacro:include") return include(v, symbols, macros, out);
     if (name == "xacro:property") return property(v, symbols);
@@ -1059,6 +1110,7 @@ class Expander {
   CallChain chain_ = std::make_shared<const std::vector<CallFrame>>();
   std::size_t output_bytes_ = 0;
   std::size_t depth_ = 0;
+  std::uint64_t comment_stop_ = 0;  // the mark drop_previous_comments stops at
 };
 
 std::optional<Value> NameScope::lookup(std::string_view name) { return expander_.lookup(table_, name, *this); }
@@ -1090,6 +1142,7 @@ std::optional<Value> EvalScope::call(std::string_view name, const std::vector<Va
   };
   if (name == "arg") return arg(one(name));
   if (name == "dirname") return Value(expander_.current_dir());
+  if (name == "anon") return Value(anonymous_name(one(name)));
   if (name == "env") {
     const std::string var = one(name);
     if (const char* v = std::getenv(var.c_str())) return Value(std::string(v));

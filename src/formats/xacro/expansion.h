@@ -2,6 +2,7 @@
 // What expanding a .xacro file produces: the URDF element tree, every element and attribute
 // with where it came from (the literal in a .xacro file, the property it was substituted
 // from, the expression or argument that computed it, the macro calls it was expanded in).
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -45,6 +46,9 @@ struct OutNode {
   std::vector<OutNode> children;
   Span span;  // the element's start tag in its .xacro file
   CallChain chain;
+  // While expanding: nonzero on the empty text node that marks where xacro stops dropping
+  // comments (see Expander::drop_previous_comments); none is left in a finished expansion.
+  std::uint64_t comment_stop = 0;
 
   OutAttribute* attribute(std::string_view attr);
 };

@@ -47,7 +47,13 @@ class Builder {
       attr.value_span = file_.span(id_, a.value_offset, a.value_length);
       out.attributes.push_back(std::move(attr));
     }
+    int comment_end = -1;  // the line the comment just before ends on
     for (const tinyxml2::XMLNode* child = el->FirstChild(); child; child = child->NextSibling()) {
+      // tinyxml2 drops the white space between two markup nodes, and xacro stops dropping the
+      // comments before a xacro construct at a blank line: a blank line after a comment stays.
+      if (comment_end >= 0 && !child->ToText() && child->GetLineNum() - comment_end >= 2)
+        out.children.push_back(leaf(XNode::Kind::Text, "\n\n", comment_end));
+      comment_end = -1;
       if (const auto* e = child->ToElement()) {
         XNode node;
         if (!build(e, node)) return false;
@@ -56,6 +62,8 @@ class Builder {
         out.children.push_back(leaf(XNode::Kind::Text, t->Value(), child->GetLineNum()));
       } else if (const auto* c = child->ToComment()) {
         out.children.push_back(leaf(XNode::Kind::Comment, c->Value(), child->GetLineNum()));
+        const std::string& text = out.children.back().name;
+        comment_end = child->GetLineNum() + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
       }
     }
     return true;
