@@ -77,6 +77,10 @@ TEST_CASE("xacro CLI: expand prints the URDF, with arguments", "[xacro][cli]") {
 
   const auto broken = test::run_cli({"expand", "urdf/demo_gripper_macro.xacro", "--xacro-arg", "x"}, package);
   CHECK(broken.exit_code == 2);
+
+  const fs::path written = dir.path() / "generated" / "urdf" / "gripper.urdf";  // directories made as xacro makes them
+  CHECK(test::run_cli({"expand", "urdf/demo_gripper.urdf.xacro", "-o", written.string()}, package).exit_code == 0);
+  CHECK(test::read_file(written).find("<joint name=\"cfg_right_finger_joint\"") != std::string::npos);
 }
 
 TEST_CASE("xacro CLI: a suppression comment in the macro file covers every expansion", "[xacro][cli]") {

@@ -106,6 +106,11 @@ TEST_CASE("xacro expressions: logic, comparisons, conditionals, strings", "[xacr
   CHECK(eval("s.lower()") == "hello");
   CHECK(eval("'a' 'b'") == "ab");
   CHECK(eval("u'x'") == "x");
+  // Characters, not bytes, as Python 3 counts them.
+  CHECK(eval("len('\u00b5m')") == "2");
+  CHECK(eval("'\u00b5m'[0]") == "\u00b5");
+  CHECK(eval("'a\u00b5m'[1:]") == "\u00b5m");
+  CHECK(eval("[c for c in '\u00b5m']") == "['\u00b5', 'm']");
 }
 
 TEST_CASE("xacro expressions: lists, tuples, dicts and indexing", "[xacro]") {

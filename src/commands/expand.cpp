@@ -70,6 +70,9 @@ int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ost
     out << *expanded.text;
     return kExitClean;
   }
+  // As xacro does, -o creates the directories the output goes into.
+  if (const std::filesystem::path parent = std::filesystem::path(output).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent, ec);
   std::ofstream file(output, std::ios::binary);
   file << *expanded.text;
   if (!file) {

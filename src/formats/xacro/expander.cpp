@@ -530,7 +530,9 @@ class Expander {
     if (std::find(owner->resolving.begin(), owner->resolving.end(), name) != owner->resolving.end()) {
       std::string cycle;
       for (const auto& r : owner->resolving) cycle += r + " -> ";
-      throw EvalError(fmt::format("circular variable definition: {}{}", cycle, name));
+      throw EvalError(fmt::format("circular variable definition: {}{} (a property that uses its own earlier value "
+                                  "needs lazy_eval=\"false\")",
+                                  cycle, name));
     }
     owner->resolving.push_back(name);
     const CallChain saved = chain_;
@@ -1142,7 +1144,6 @@ std::optional<Value> EvalScope::call(std::string_view name, const std::vector<Va
   };
   if (name == "arg") return arg(one(name));
   if (name == "dirname") return Value(expander_.current_dir());
-  if (name == "anon") return Value(anonymous_name(one(name)));
   if (name == "env") {
     const std::string var = one(name);
     if (const char* v = std::getenv(var.c_str())) return Value(std::string(v));

@@ -207,11 +207,27 @@ const Value* dict_find(const DictValue& dict, const Value& key) {
   return nullptr;
 }
 
+// A str's characters as Python counts them: the code points of its UTF-8 text (a byte that
+// starts no valid sequence counts as one).
+std::vector<std::string> characters(const std::string& s) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < s.size();) {
+    const auto lead = static_cast<unsigned char>(s[i]);
+    std::size_t n = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 1;
+    if (i + n > s.size()) n = 1;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) n = 1;
+    out.push_back(s.substr(i, n));
+    i += n;
+  }
+  return out;
+}
+
 std::vector<Value> iterate(const Value& v) {
   if (v.is_list()) return v.as_list().items;
   if (v.is_string()) {
     std::vector<Value> chars;
-    for (char c : v.string()) chars.emplace_back(std::string(1, c));
+    for (std::string& c : characters(v.string())) chars.emplace_back(std::move(c));
     return chars;
   }
   if (v.is_dict()) {
@@ -375,7 +391,7 @@ std::size_t footprint(const Value& v) {
 }
 
 // Iterations all comprehensions of one expression may run (nested loops multiply).
-constexpr std::size_t kMaxComprehensionSteps = std::size_t{1} << 20;
+constexpr std::size_t kMaxComprehensionSteps = std::size_t{1} << 18;
 
 class Evaluator {
  public:
@@ -540,9 +556,11 @@ class Evaluator {
         return normalize_index(v.integer(), size, true);
       };
       if (base.is_string()) {
-        const std::string& s = base.string();
-        const std::int64_t lo = bound(index.children[0], 0, s.size()), hi = bound(index.children[1], static_cast<std::int64_t>(s.size()), s.size());
-        return Value(lo < hi ? s.substr(static_cast<std::size_t>(lo), static_cast<std::size_t>(hi - lo)) : std::string());
+        const std::vector<std::string> chars = characters(base.string());
+        const std::int64_t lo = bound(index.children[0], 0, chars.size()), hi = bound(index.children[1], static_cast<std::int64_t>(chars.size()), chars.size());
+        std::string out;
+        for (std::int64_t i = lo; i < hi; ++i) out += chars[static_cast<std::size_t>(i)];
+        return Value(std::move(out));
       }
       if (base.is_list()) {
         const auto& items = base.as_list().items;
@@ -562,8 +580,8 @@ class Evaluator {
       if (!key.is_int() && !key.is_bool())
         type_error(fmt::format("{} indices must be integers, not {}", base.type_name(), key.type_name()));
       if (base.is_string()) {
-        const std::int64_t i = normalize_index(key.integer(), base.string().size(), false);
-        return Value(std::string(1, base.string()[static_cast<std::size_t>(i)]));
+        const std::vector<std::string> chars = characters(base.string());
+        return Value(chars[static_cast<std::size_t>(normalize_index(key.integer(), chars.size(), false))]);
       }
       return base.as_list().items[static_cast<std::size_t>(normalize_index(key.integer(), base.as_list().items.size(), false))];
     }
@@ -684,7 +702,7 @@ class Evaluator {
     if (name == "len") {
       arity(name, args, 1, 1);
       const Value& v = args[0];
-      if (v.is_string()) return Value(static_cast<std::int64_t>(v.string().size()));
+      if (v.is_string()) return Value(static_cast<std::int64_t>(characters(v.string()).size()));
       if (v.is_list()) return Value(static_cast<std::int64_t>(v.as_list().items.size()));
       if (v.is_dict()) return Value(static_cast<std::int64_t>(v.as_dict().items.size()));
       type_error(fmt::format("object of type '{}' has no len()", v.type_name()));
