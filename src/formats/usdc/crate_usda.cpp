@@ -83,6 +83,8 @@ class Writer {
   }
 
   CrateText run() {
+    // The text is 2 to 5 times the crate's size: reserved once instead of growing by copies.
+    out_.reserve(file_.bytes().size() * 4);
     out_ = "#usda 1.0\n";
     const auto root = find("/");
     std::vector<Field> fields;

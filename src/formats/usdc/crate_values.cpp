@@ -81,11 +81,20 @@ float half_to_float(std::uint16_t h) {
   return sign ? -v : v;
 }
 
+// Formats into a buffer on the stack: appending through a back inserter costs a call per
+// character, and mesh arrays hold millions of numbers.
+template <class T>
+void append_number(std::string& out, T v) {
+  char buffer[48];
+  const auto written = fmt::format_to_n(buffer, sizeof buffer, "{}", v);
+  out.append(buffer, std::min(written.size, sizeof buffer));
+}
+
 template <class F>
 void append_real(std::string& out, F v) {
   if (std::isnan(v)) out += "nan";
   else if (std::isinf(v)) out += v < 0 ? "-inf" : "inf";
-  else fmt::format_to(std::back_inserter(out), "{}", v);
+  else append_number(out, v);
 }
 
 template <class F>
@@ -191,7 +200,7 @@ namespace {
 // Appends one stored component as USDA writes it. Large arrays are millions of these: they are
 // formatted in place, without a string per component.
 void append_component(std::string& out, const CrateFile& file, Num num, const char* p, const std::string& what) {
-  const auto integer = [&](auto v) { fmt::format_to(std::back_inserter(out), "{}", v); };
+  const auto integer = [&](auto v) { append_number(out, v); };
   switch (num) {
     case Num::Bool: out += *p ? "1" : "0"; return;
     case Num::U8: integer(load<std::uint8_t>(p)); return;
@@ -439,17 +448,19 @@ Literal ValueReader::array(ValueRep rep, const std::string& what) {
         c.fail(fmt::format("unknown compressed array code {}", static_cast<int>(code)));
       }
     }
-  } else {
-    const std::size_t n = c.count(claimed, element_bytes, "array items");
-    const std::string_view raw = c.take(n * element_bytes);
-    data.assign(raw.data(), raw.size());
   }
-  const std::size_t n = data.size() / element_bytes;
+  std::string_view items = data;
+  if (data.empty()) {
+    const std::size_t n = c.count(claimed, element_bytes, "array items");
+    items = c.take(n * element_bytes);
+  }
+  const std::size_t n = items.size() / element_bytes;
   std::string out = "[";
-  out.reserve(n * 8 + 2);
+  // About ten characters a component and a separator: one allocation for mesh arrays.
+  out.reserve(n * (static_cast<std::size_t>(e->components) * 10 + 4) + 2);
   for (std::size_t i = 0; i < n; ++i) {
     if (i) out += ", ";
-    append_element(out, file_, *e, data.data() + i * element_bytes, what);
+    append_element(out, file_, *e, items.data() + i * element_bytes, what);
   }
   out += ']';
   return {type, std::move(out)};
