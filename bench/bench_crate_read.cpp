@@ -1,6 +1,8 @@
 // Reads binary USD (crate) layers repeatedly and compares with reading the same layer as
-// USDA text: the crate path is decode + the USDA it reads as + parse; the text path is the
-// parse of that same text (what a .usda file of the same content costs).
+// USDA text. crate: what checking a crate layer costs (usdc::read_crate_layer, the layer
+// built from the crate's specs); via_text: the crate written as the USDA `cat` prints,
+// then parsed; usda: the parse of that same text (what a .usda file of the same content
+// costs).
 //   bench_crate_read [-n N] file.usd...
 #include <algorithm>
 #include <chrono>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "formats/usda/parser.h"
+#include "formats/usdc/crate_layer.h"
 #include "formats/usdc/crate_usda.h"
 
 using namespace assetlint;
@@ -50,7 +53,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: bench_crate_read [-n runs] file.usd...\n");
     return 2;
   }
-  std::printf("file\tcrate_bytes\tusda_bytes\tprims\tcrate_ms\tusda_ms\tcrate_us_per_prim\tusda_us_per_prim\n");
+  std::printf("file\tcrate_bytes\tusda_bytes\tprims\tcrate_ms\tvia_text_ms\tusda_ms\tcrate_us_per_prim\tusda_us_per_prim\n");
   for (const auto& path : paths) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream ss;
@@ -64,10 +67,18 @@ int main(int argc, char** argv) {
     const std::string text = std::get<usdc::CrateText>(first).text;
     std::size_t prims = 0;
     const double crate = best_of(runs, [&] {
+      std::string error;
+      auto read = usdc::read_crate_layer(path, bytes, 0, error);
+      if (!read || !read->layer) {
+        std::fprintf(stderr, "%s: not read directly %s\n", path.c_str(), error.c_str());
+        std::abort();
+      }
+      prims = count_prims(read->layer->prims);
+    });
+    const double via_text = best_of(runs, [&] {
       auto r = usdc::crate_to_usda(bytes);
       const SourceFile file(path, std::move(std::get<usdc::CrateText>(r).text));
-      auto parsed = usda::parse_layer(file, 0);
-      prims = parsed.ok() ? count_prims(parsed.layer().prims) : 0;
+      if (!usda::parse_layer(file, 0).ok()) std::abort();
     });
     const double usda = best_of(runs, [&] {
       const SourceFile file(path, text);
@@ -75,8 +86,8 @@ int main(int argc, char** argv) {
       if (!parsed.ok()) std::abort();
     });
     const double per = static_cast<double>(std::max<std::size_t>(prims, 1));
-    std::printf("%s\t%zu\t%zu\t%zu\t%.3f\t%.3f\t%.2f\t%.2f\n", path.c_str(), bytes.size(), text.size(), prims,
-                crate * 1e3, usda * 1e3, crate * 1e6 / per, usda * 1e6 / per);
+    std::printf("%s\t%zu\t%zu\t%zu\t%.3f\t%.3f\t%.3f\t%.2f\t%.2f\n", path.c_str(), bytes.size(), text.size(), prims,
+                crate * 1e3, via_text * 1e3, usda * 1e3, crate * 1e6 / per, usda * 1e6 / per);
   }
   return 0;
 }

@@ -18,6 +18,7 @@
 #include "formats/urdf/urdf_reader.h"
 #include "formats/usda/usd_reader.h"
 #include "formats/xacro/xacro_reader.h"
+#include "formats/usdc/crate_layer.h"
 #include "formats/usdc/crate_usda.h"
 #include "physics/articulation.h"
 #include "pipeline/binary_layer_fixes.h"
@@ -38,7 +39,7 @@ xacro::XacroOptions xacro_options(const std::string& path, const Settings& setti
 }
 
 usda::ComposeOptions compose_options(const std::string& path, const Settings& settings) {
-  usda::ComposeOptions options{config::checked_root(path, settings), settings.allow_outside_root, {}};
+  usda::ComposeOptions options{config::checked_root(path, settings), settings.allow_outside_root, {}, {}};
   for (const auto& [set, variant] : settings.usd.variants) options.pinned_variants[set] = variant.value;
   return options;
 }
@@ -90,6 +91,16 @@ std::shared_ptr<const SourceFile> source_of(const std::string& path, std::string
   return std::make_shared<const SourceFile>(path, std::move(text));
 }
 
+// The source lint reads, and for a crate layer the layer read from it already.
+std::shared_ptr<const SourceFile> root_of(const std::string& path, std::string text, std::string& error,
+                                          std::shared_ptr<const usda::Layer>& layer) {
+  if (!usdc::is_crate(text)) return std::make_shared<const SourceFile>(path, std::move(text));
+  auto crate = usdc::read_crate_layer(path, text, 0, error);
+  if (!crate) return nullptr;
+  layer = std::move(crate->layer);
+  return std::move(crate->source);
+}
+
 // The reader's findings the selection keeps, then the rules' (when the model is usable).
 std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std::set<FileId>& unparsable) {
   std::vector<Diagnostic> diagnostics;
@@ -120,14 +131,16 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     report.error = std::move(*why);
     return report;
   }
-  auto file = source_of(path, std::move(text), report.error.emplace());
+  std::shared_ptr<const usda::Layer> crate_layer;
+  auto file = root_of(path, std::move(text), report.error.emplace(), crate_layer);
   if (!file) return report;
   report.error.reset();
   std::set<FileId> unparsable;
   ReadResult result;
   std::vector<Diagnostic> diagnostics;
   if (kind == FileKind::Usda) {
-    const usda::ComposeOptions options = compose_options(path, settings);
+    usda::ComposeOptions options = compose_options(path, settings);
+    options.root_layer = std::move(crate_layer);
     usda::Stage stage = usda::compose_stage(file, files, options);
     const std::vector<usda::VariantSetUse> sets = stage.variant_sets;
     result = usda::read_stage(std::move(stage));

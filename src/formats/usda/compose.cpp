@@ -10,7 +10,8 @@
 
 #include "formats/file_kind.h"
 #include "formats/usda/parser.h"
-#include "formats/usdc/crate_usda.h"
+#include "formats/usdc/crate_layer.h"
+#include "formats/usdc/crate_file.h"
 #include "rules/reader_rules.h"
 
 namespace assetlint::usda {
@@ -130,7 +131,8 @@ class Composer {
     stage_.sources.push_back(std::move(root));
     stage_.layers.emplace_back();
     by_path_[key] = Loaded{0, {}, Severity::Info, {}};
-    parse(0);
+    if (options_.root_layer) stage_.layers[0] = options_.root_layer;
+    else parse(0);
     if (!stage_.usable) return std::move(stage_);
     stage_.root_stack = stack(0);
 
@@ -232,9 +234,14 @@ class Composer {
     std::optional<std::string> text = files_.read(key, error);
     if (!text) return {std::nullopt, fmt::format("cannot be read ({}); skipped", error), Severity::Info, {}};
     std::shared_ptr<const SourceFile> source;
+    const auto id = static_cast<FileId>(stage_.sources.size());
     if (usdc::is_crate(*text)) {
-      source = usdc::crate_source(key, *text, error);
-      if (!source) return {std::nullopt, "cannot be read; its opinions are skipped", Severity::Warning, error};
+      auto crate = usdc::read_crate_layer(key, *text, id, error);
+      if (!crate) return {std::nullopt, "cannot be read; its opinions are skipped", Severity::Warning, error};
+      stage_.sources.push_back(std::move(crate->source));
+      stage_.layers.push_back(std::move(crate->layer));
+      if (!stage_.layers[id]) parse(id);
+      return {id, {}, Severity::Info, {}};
     } else if (is_lfs_pointer(*text)) {
       return {std::nullopt, lfs_pointer_message() + "; its opinions are skipped", Severity::Warning, {}};
     } else if (!starts_with_text_header(*text)) {
@@ -242,7 +249,6 @@ class Composer {
     } else {
       source = std::make_shared<const SourceFile>(key, std::move(*text));
     }
-    const auto id = static_cast<FileId>(stage_.sources.size());
     stage_.sources.push_back(std::move(source));
     stage_.layers.emplace_back();
     parse(id);

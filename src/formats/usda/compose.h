@@ -43,6 +43,9 @@ struct ComposeOptions {
   // Selections that replace the authored ones, for every prim with a variant set of that
   // name (a stronger layer selecting them on every such prim would do the same).
   VariantSelections pinned_variants;
+  // The root layer, read already (a crate layer, usdc::read_crate_layer); null: parse the
+  // root source.
+  std::shared_ptr<const Layer> root_layer;
 };
 
 // A variant set on a composed prim, and the variant this composition selected in it.
@@ -112,7 +115,7 @@ struct ComposedPrim {
 
 struct Stage {
   std::vector<std::shared_ptr<const SourceFile>> sources;  // by FileId; [0] the root layer
-  std::vector<std::unique_ptr<Layer>> layers;              // by FileId; null when not parsed
+  std::vector<std::shared_ptr<const Layer>> layers;        // by FileId; null when not parsed
   std::vector<FileId> root_stack;                          // the root layer stack, strongest first
   std::vector<ComposedPrim> prims;                         // depth-first, parents before children
   std::vector<std::size_t> roots;                          // root prims, in order

@@ -50,8 +50,13 @@ struct Failure {
 // that line. (A 1 MB file can be a single line; nothing here rescans it.)
 class SpanMaker {
  public:
-  SpanMaker(const SourceFile& file, FileId id) : file_(file), id_(id), text_(file.view()) {
+  SpanMaker(const SourceFile& file, FileId id, std::size_t start = 0) : file_(file), id_(id), text_(file.view()) {
     if (text_.size() >= 3 && text_.compare(0, 3, "\xEF\xBB\xBF") == 0) off_ = bom_ = 3;
+    if (start > off_ && start <= text_.size()) {
+      // A parse that starts inside the text (one value) starts at that line.
+      line_ = file.position(start).line;
+      off_ = std::max(bom_, file.line_start(line_));
+    }
   }
 
   Span span(std::size_t offset, std::size_t length) {
@@ -103,11 +108,15 @@ std::string quote_for_message(std::string_view s) {
 
 class Parser {
  public:
-  Parser(const SourceFile& file, FileId id, const ParseOptions& options, std::size_t start = 0)
-      : file_(file), id_(id), text_(file.view()), lex_(file.view(), start), spans_(file, id), options_(options) {}
+  // Reads the text from `start` up to `end`.
+  Parser(const SourceFile& file, FileId id, const ParseOptions& options, std::size_t start = 0,
+         std::size_t end = std::string_view::npos)
+      : file_(file), id_(id), text_(file.view().substr(0, end)), lex_(text_, start), spans_(file, id, start),
+        options_(options) {}
 
   Layer parse_layer();
   Value parse_standalone_value();
+  Value parse_whole_value(std::string_view metadata_key, std::string_view attribute_type);
 
  private:
   // --- tokens ------------------------------------------------------------------
@@ -265,6 +274,27 @@ Layer Parser::parse_layer() {
 Value Parser::parse_standalone_value() {
   advance();
   return parse_value(false);
+}
+
+Value Parser::parse_whole_value(std::string_view metadata_key, std::string_view attribute_type) {
+  advance();
+  Value v;
+  if (metadata_key.empty()) {
+    const bool is_array = attribute_type.ends_with("[]");
+    v = parse_value(is_array && !is_non_numeric_type(attribute_type.substr(0, attribute_type.size() - 2)));
+  } else if (metadata_key == "symmetryFunction") {
+    fail_here("a symmetryFunction value is read with its statement only");
+  } else if (is_word("None")) {
+    v.kind = ValueKind::None;
+    v.span = span_of(tok_);
+    consume();
+  } else if (is_arc_key(metadata_key)) {
+    v = parse_arc_list();
+  } else {
+    v = parse_value(false);
+  }
+  if (!is(TokenKind::End)) fail_here("expected the end of the value");
+  return v;
 }
 
 void Parser::parse_metadata_block(std::vector<Metadata>& out, const char* owner) {
@@ -983,6 +1013,17 @@ ParseResult parse_layer(const SourceFile& file, FileId id, const ParseOptions& o
     return ParseResult(parser.parse_layer());
   } catch (Failure& f) {
     return ParseResult(std::move(f.error));
+  }
+}
+
+std::variant<Value, ParseError> parse_value_at(const SourceFile& file, FileId id, std::size_t begin, std::size_t end,
+                                               std::string_view metadata_key, std::string_view attribute_type) {
+  try {
+    const ParseOptions options;
+    Parser parser(file, id, options, begin, end);
+    return parser.parse_whole_value(metadata_key, attribute_type);
+  } catch (Failure& f) {
+    return std::move(f.error);
   }
 }
 

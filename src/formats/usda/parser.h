@@ -50,6 +50,13 @@ class ParseResult {
 // Parses one whole layer. Never throws on bad input (only std::bad_alloc may escape).
 ParseResult parse_layer(const SourceFile& file, FileId id, const ParseOptions& options = {});
 
+// Parses the value written in file[begin, end) as it would be read in a layer: the value
+// of metadata `metadata_key` (references, payload, ... as arc lists), or, with the key
+// empty, the default or a time sample of an attribute of type `attribute_type` ("float3[]":
+// a large numeric array stays lazy, as parse_layer keeps it).
+std::variant<Value, ParseError> parse_value_at(const SourceFile& file, FileId id, std::size_t begin, std::size_t end,
+                                               std::string_view metadata_key, std::string_view attribute_type);
+
 // Parses the items of a lazy list value (or returns a copy of a materialized one's).
 // `file` must be the file the value was parsed from.
 std::variant<std::vector<Value>, ParseError> parse_elements(const Value& list, const SourceFile& file,

@@ -10,71 +10,11 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "formats/usdc/crate_usda_style.h"
 #include "formats/usdc/crate_values.h"
 
 namespace assetlint::usdc {
 namespace {
-
-bool valid_name(std::string_view s, bool namespaced) {
-  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  for (char c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || (namespaced && (c == ':' || c == '.' || c == '-'))))
-      return false;
-  return s.back() != ':';
-}
-
-bool valid_type_name(std::string_view s) {
-  if (s.ends_with("[]")) s.remove_suffix(2);
-  return valid_name(s, false);
-}
-
-// Fields that are the layer's structure, written as declarations rather than metadata.
-const std::unordered_set<std::string_view>& structural_fields() {
-  static const std::unordered_set<std::string_view> set{
-      "primChildren", "properties", "variantChildren", "variantSetChildren", "targetChildren", "connectionChildren",
-      "specifier", "typeName", "default", "timeSamples", "targetPaths", "connectionPaths", "custom",
-      "variability", "primOrder", "propertyOrder", "subLayerOffsets"};
-  return set;
-}
-
-bool is_arc(std::string_view key) {
-  return key == "references" || key == "payload" || key == "inherits" || key == "specializes";
-}
-
-// List-op metadata that OpenUSD's text writer writes without brackets when it holds one item.
-bool bare_when_single(std::string_view key) { return is_arc(key) || key == "variantSetNames"; }
-
-// Names in the order OpenUSD's text writer lists properties: letters without regard to
-// case ('_' before them), digit runs by value, then byte order.
-bool dictionary_less(std::string_view a, std::string_view b) {
-  std::size_t i = 0, j = 0;
-  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
-  while (i < a.size() && j < b.size()) {
-    const auto l = static_cast<unsigned char>(a[i]), r = static_cast<unsigned char>(b[j]);
-    if (digit(a[i]) && digit(b[j])) {
-      std::size_t ie = i, je = j;
-      while (ie < a.size() && digit(a[ie])) ++ie;
-      while (je < b.size() && digit(b[je])) ++je;
-      std::string_view x = a.substr(i, ie - i), y = b.substr(j, je - j);
-      while (x.size() > 1 && x[0] == '0') x.remove_prefix(1);
-      while (y.size() > 1 && y[0] == '0') y.remove_prefix(1);
-      if (x.size() != y.size()) return x.size() < y.size();
-      if (x != y) return x < y;
-      i = ie;
-      j = je;
-      continue;
-    }
-    if (l < 0x80 && r < 0x80 && l >= 0x40 && r >= 0x40 && (l & ~0x20) != (r & ~0x20))
-      return ((l + 5) & 31) < ((r + 5) & 31);
-    if (l != r && !(l >= 0x40 && r >= 0x40 && (l & ~0x20) == (r & ~0x20))) return l < r;
-    ++i;
-    ++j;
-  }
-  if (a.size() - i != b.size() - j) return a.size() - i < b.size() - j;
-  return a < b;
-}
-
-std::string indentation(int indent) { return std::string(static_cast<std::size_t>(indent) * 4, ' '); }
 
 class Writer {
  public:
@@ -136,7 +76,7 @@ class Writer {
     const std::string pad = indentation(indent);
     for (const Field& f : fields) {
       const std::string& key = file_.token(f.token, "FIELDS");
-      if (structural_fields().count(key)) continue;
+      if (is_structural_field(key)) continue;
       const std::string what = fmt::format("<{}> {}", path, key);
       try {
         if (key == "subLayers") {
@@ -189,19 +129,6 @@ class Writer {
         skipped_.push_back(what);
       }
     }
-  }
-
-  static std::string bracketed(const std::vector<std::string>& items, int indent) {
-    std::string text = "[";
-    const bool multiline = items.size() > 1 && items[0].find('(') != std::string::npos;
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      if (multiline) text += "\n" + indentation(indent + 1);
-      else if (i) text += " ";
-      text += items[i];
-      if (i + 1 < items.size()) text += ",";
-    }
-    if (multiline) text += "\n" + indentation(indent);
-    return text + "]";
   }
 
   void metadata_block(const std::vector<Field>& fields, const std::string& path, int indent) {

@@ -1,5 +1,7 @@
 #include "formats/usdc/crate_values.h"
 
+#include "formats/usdc/crate_usda_style.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -117,8 +119,6 @@ bool identifier(std::string_view s) {
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
   return true;
 }
-
-std::string indentation(int indent) { return std::string(static_cast<std::size_t>(indent) * 4, ' '); }
 
 }  // namespace
 
@@ -258,8 +258,20 @@ std::string element_text(const CrateFile& file, const Element& e, const char* p,
 
 Literal ValueReader::literal(ValueRep rep, const std::string& what, int indent) {
   if (is_list_op(rep)) throw UnsupportedValue{what};
-  if (rep.is_array()) return array(rep, what);
+  if (rep.is_array()) {
+    Literal out;
+    out.type = array(rep, what, out.text);
+    return out;
+  }
   return scalar(rep, what, indent);
+}
+
+std::string ValueReader::append_literal(ValueRep rep, const std::string& what, int indent, std::string& out) {
+  if (is_list_op(rep)) throw UnsupportedValue{what};
+  if (rep.is_array()) return array(rep, what, out);
+  Literal value = scalar(rep, what, indent);
+  out += value.text;
+  return std::move(value.type);
 }
 
 Literal ValueReader::scalar(ValueRep rep, const std::string& what, int indent) {
@@ -380,11 +392,14 @@ Literal ValueReader::scalar(ValueRep rep, const std::string& what, int indent) {
   throw UnsupportedValue{what};
 }
 
-Literal ValueReader::array(ValueRep rep, const std::string& what) {
+std::string ValueReader::array(ValueRep rep, const std::string& what, std::string& out) {
   const Element* e = element_of(rep.type());
   if (!e) fail(what, fmt::format("type {} cannot be an array", rep.type()));
-  const std::string type = std::string(e->name) + "[]";
-  if (rep.payload() == 0) return {type, "[]"};
+  std::string type = std::string(e->name) + "[]";
+  if (rep.payload() == 0) {
+    out += "[]";
+    return type;
+  }
   Cursor c = at(rep, what);
   const Version& v = file_.version();
   if (!v.at_least(0, 5)) c.read<std::uint32_t>();  // rank, written before 0.5.0
@@ -455,15 +470,15 @@ Literal ValueReader::array(ValueRep rep, const std::string& what) {
     items = c.take(n * element_bytes);
   }
   const std::size_t n = items.size() / element_bytes;
-  std::string out = "[";
   // About ten characters a component and a separator: one allocation for mesh arrays.
-  out.reserve(n * (static_cast<std::size_t>(e->components) * 10 + 4) + 2);
+  out.reserve(out.size() + n * (static_cast<std::size_t>(e->components) * 10 + 4) + 2);
+  out += '[';
   for (std::size_t i = 0; i < n; ++i) {
     if (i) out += ", ";
     append_element(out, file_, *e, items.data() + i * element_bytes, what);
   }
   out += ']';
-  return {type, std::move(out)};
+  return type;
 }
 
 std::string ValueReader::dictionary(Cursor& c, const std::string& what, int indent) {

@@ -41,6 +41,8 @@ class ValueReader {
   bool is_list_op(ValueRep rep) const;
   // `what` names the field in errors ("</robot.physics:mass> default").
   Literal literal(ValueRep rep, const std::string& what, int indent = 0);
+  // The literal appended to `out` (mesh arrays are megabytes: not copied); returns its type.
+  std::string append_literal(ValueRep rep, const std::string& what, int indent, std::string& out);
   ListOpValue list_op(ValueRep rep, const std::string& what);
   std::vector<std::string> tokens(ValueRep rep, const std::string& what);  // token vector or token[]/string[]
   std::string token(ValueRep rep, const std::string& what);  // a token value, unquoted
@@ -53,7 +55,7 @@ class ValueReader {
  private:
   class Guard;
   Literal scalar(ValueRep rep, const std::string& what, int indent);
-  Literal array(ValueRep rep, const std::string& what);
+  std::string array(ValueRep rep, const std::string& what, std::string& out);
   std::string dictionary(Cursor& c, const std::string& what, int indent);
   Literal vt_value(Cursor& c, const std::string& what, int indent);
   std::string arc(Cursor& c, unsigned type, const std::string& what, int indent);

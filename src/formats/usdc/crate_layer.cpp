@@ -1,0 +1,453 @@
+#include "formats/usdc/crate_layer.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <new>
+#include <stdexcept>
+#include <unordered_map>
+#include <variant>
+
+#include "formats/usda/literals.h"
+#include "formats/usda/parser.h"
+#include "formats/usdc/crate_file.h"
+#include "formats/usdc/crate_usda.h"
+#include "formats/usdc/crate_usda_style.h"
+#include "formats/usdc/crate_values.h"
+
+namespace assetlint::usdc {
+namespace {
+
+// Content this reader leaves to the text path, which reads it or reports why it cannot.
+struct UseText {};
+
+usda::ListOp list_op_of(ItemOp op) {
+  switch (op) {
+    case ItemOp::Add: return usda::ListOp::Add;
+    case ItemOp::Prepend: return usda::ListOp::Prepend;
+    case ItemOp::Append: return usda::ListOp::Append;
+    case ItemOp::Delete: return usda::ListOp::Delete;
+    case ItemOp::Reorder: return usda::ListOp::Reorder;
+    default: return usda::ListOp::Explicit;
+  }
+}
+
+// A name as the parser reads it back from its quoted form.
+std::string as_read(const std::string& name) {
+  const bool plain = std::none_of(name.begin(), name.end(), [](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return c < 0x20 || c == 0x7F || ch == '"' || ch == '\\';
+  });
+  return plain ? name : usda::decode_string(quoted(name));
+}
+
+class Builder {
+ public:
+  Builder(const CrateFile& file, FileId id) : file_(file), values_(file), id_(id) {
+    for (std::size_t i = 0; i < file.specs().size(); ++i) by_path_.emplace(file.paths()[file.specs()[i].path].text, i);
+  }
+
+  CrateLayer run(const std::string& path) {
+    usda::Layer layer;
+    layer.file = id_;
+    layer.version = "1.0";
+    // The literals take about the USDA text's size, 2 to 5 times the crate's.
+    text_.reserve(file_.bytes().size() * 4);
+    objects_.push_back({0, ""});
+    layer.header_span = mark();
+    const auto root = find("/");
+    std::vector<Field> fields;
+    if (root) fields = file_.fields_of(file_.specs()[*root]);
+    metadata(fields, "/", 1, true, layer.metadata);
+    for (const std::string& name : names(fields, "primChildren", "/")) prim("/" + name, name, 0, layer.prims);
+    auto source = std::make_shared<const SourceFile>(path, std::move(text_), std::move(objects_));
+    source_ = source.get();
+    read_values(layer);
+    return {std::move(source), std::make_shared<const usda::Layer>(std::move(layer))};
+  }
+
+ private:
+  std::optional<std::size_t> find(std::string_view path) const {
+    auto it = by_path_.find(path);
+    if (it == by_path_.end()) return std::nullopt;
+    return it->second;
+  }
+
+  const Field* field(const std::vector<Field>& fields, std::string_view name) const {
+    for (const Field& f : fields)
+      if (file_.token(f.token, "FIELDS") == name) return &f;
+    return nullptr;
+  }
+
+  std::vector<std::string> names(const std::vector<Field>& fields, std::string_view key, const std::string& path) {
+    const Field* f = field(fields, key);
+    if (!f) return {};
+    return values_.tokens(f->rep, fmt::format("<{}> {}", path, key));
+  }
+
+  // --- the source: a line per object, a character per node, the values' literals ---------
+  void advance_lines(std::size_t from) {
+    for (std::size_t i = text_.find('\n', from); i != std::string::npos; i = text_.find('\n', i + 1)) {
+      ++line_;
+      line_start_ = i + 1;
+    }
+  }
+
+  void locate(const std::string& path) {
+    text_ += '\n';
+    ++line_;
+    line_start_ = text_.size();
+    objects_.push_back({text_.size(), path});
+  }
+
+  Span mark() {
+    const std::size_t at = text_.size();
+    text_ += ' ';
+    return Span{id_, at, 1, line_, static_cast<std::uint32_t>(at - line_start_ + 1)};
+  }
+
+  // A value to read once the source exists (read_values): the literal written from `from` on.
+  usda::Value placeholder(std::size_t from) {
+    usda::Value v;
+    v.lazy = true;
+    v.span = Span{id_, from, text_.size() - from, line_, 1};
+    advance_lines(from);
+    text_ += ' ';
+    return v;
+  }
+
+  usda::Value literal(std::string_view text) {
+    const std::size_t from = text_.size();
+    text_ += text;
+    return placeholder(from);
+  }
+
+  usda::Metadata item(usda::ListOp op, std::string key, std::string_view value) {
+    usda::Metadata m;
+    m.span = mark();
+    if (op != usda::ListOp::Explicit) m.op_span = m.span;
+    m.op = op;
+    m.key = std::move(key);
+    m.key_span = mark();
+    m.value = literal(value);
+    return m;
+  }
+
+  // --- structure, in the order of the text writer -----------------------------------------
+  void metadata(const std::vector<Field>& fields, const std::string& path, int indent, bool layer,
+                std::vector<usda::Metadata>& out) {
+    for (const Field& f : fields) {
+      const std::string& key = file_.token(f.token, "FIELDS");
+      if (is_structural_field(key)) continue;
+      const std::string what = fmt::format("<{}> {}", path, key);
+      try {
+        if (key == "subLayers") {
+          std::vector<std::pair<double, double>> offsets;
+          if (const Field* o = field(fields, "subLayerOffsets")) offsets = values_.layer_offsets(o->rep, what);
+          const std::vector<std::string> layers = values_.tokens(f.rep, what);
+          std::string text = "[";
+          for (std::size_t i = 0; i < layers.size(); ++i) {
+            text += asset_literal(layers[i]);
+            if (i < offsets.size() && (offsets[i].first != 0.0 || offsets[i].second != 1.0))
+              text += fmt::format(" (offset = {}; scale = {})", offsets[i].first, offsets[i].second);
+            if (i + 1 < layers.size()) text += ", ";
+          }
+          out.push_back(item(usda::ListOp::Explicit, key, text + "]"));
+          continue;
+        }
+        if (key == "variantSelection") {
+          std::string text = "{\n";
+          for (const auto& [set, selection] : values_.string_map(f.rep, what))
+            text += "string " + (valid_name(set, false) ? set : quoted(set)) + " = " + quoted(selection) + "\n";
+          out.push_back(item(usda::ListOp::Explicit, "variants", text + "}"));
+          continue;
+        }
+        const std::string shown = key == "documentation" ? "doc" : key == "variantSetNames" ? "variantSets" : key;
+        if (!valid_name(shown, false)) continue;
+        if (values_.is_list_op(f.rep)) {
+          const ListOpValue op = values_.list_op(f.rep, what);
+          if (op.is_explicit && op.parts.empty()) out.push_back(item(usda::ListOp::Explicit, shown, "None"));
+          for (const auto& [kind, items] : op.parts) {
+            if (items.empty() && kind == ItemOp::Explicit) out.push_back(item(usda::ListOp::Explicit, shown, "None"));
+            else if (items.size() == 1 && bare_when_single(key)) out.push_back(item(list_op_of(kind), shown, items[0]));
+            else out.push_back(item(list_op_of(kind), shown, bracketed(items, indent)));
+          }
+          continue;
+        }
+        Literal value = values_.literal(f.rep, what, indent);
+        if (value.type == "bool") value.text = value.text == "1" ? "true" : "false";
+        if (layer && key == "comment") {
+          if (value.type != "string") throw UseText{};
+          // A bare string in layer metadata, which the parser reads as the doc shorthand.
+          usda::Metadata m = item(usda::ListOp::Explicit, "doc", value.text);
+          m.is_doc_shorthand = true;
+          out.push_back(std::move(m));
+        } else {
+          out.push_back(item(usda::ListOp::Explicit, shown, value.text));
+        }
+      } catch (const UnsupportedValue&) {
+        // Left out, as the text writer leaves it out.
+      }
+    }
+  }
+
+  void prim(const std::string& path, const std::string& name, int indent, std::vector<usda::Prim>& siblings) {
+    const auto index = find(path);
+    if (!index) return;
+    const Spec& spec = file_.specs()[*index];
+    if (spec.type != SpecType::Prim || indent > 120) throw UseText{};
+    const std::vector<Field> fields = file_.fields_of(spec);
+    usda::Prim p;
+    p.specifier = usda::Specifier::Over;
+    if (const Field* f = field(fields, "specifier")) {
+      const auto v = values_.enum_value(f->rep, "<" + path + "> specifier");
+      p.specifier = v == 0 ? usda::Specifier::Def : v == 1 ? usda::Specifier::Over : usda::Specifier::Class;
+    }
+    if (const Field* f = field(fields, "typeName")) {
+      p.type_name = values_.token(f->rep, "<" + path + "> typeName");
+      if (!valid_name(p.type_name, false)) throw UseText{};
+    }
+    locate(path);
+    p.span = mark();
+    p.specifier_span = p.span;
+    if (!p.type_name.empty()) p.type_span = mark();
+    p.name = as_read(name);
+    p.name_span = mark();
+    metadata(fields, path, indent + 1, false, p.metadata);
+    p.open_brace_span = mark();
+    body(fields, path, indent + 1, p);
+    siblings.push_back(std::move(p));
+  }
+
+  usda::Value name_list(const std::vector<std::string>& names) {
+    usda::Value list;
+    list.kind = usda::ValueKind::List;
+    list.span = mark();
+    for (const std::string& n : names) {
+      usda::Value item;
+      item.kind = usda::ValueKind::String;
+      item.text = as_read(n);
+      item.span = mark();
+      list.elements.push_back(std::move(item));
+    }
+    list.count = list.elements.size();
+    return list;
+  }
+
+  // Properties, children and variant sets of a prim or variant.
+  void body(const std::vector<Field>& fields, const std::string& path, int indent, usda::Prim& p) {
+    for (const auto* order : {"primOrder", "propertyOrder"}) {
+      if (const Field* f = field(fields, order)) {
+        usda::ReorderStatement r;
+        r.span = mark();
+        r.what = std::string_view(order) == "primOrder" ? "nameChildren" : "properties";
+        r.names = name_list(values_.tokens(f->rep, "<" + path + "> " + order));
+        p.reorders.push_back(std::move(r));
+      }
+    }
+    std::vector<std::string> properties = names(fields, "properties", path);
+    std::stable_sort(properties.begin(), properties.end(),
+                     [](const std::string& a, const std::string& b) { return dictionary_less(a, b); });
+    for (const std::string& name : properties) property(path, name, indent, p);
+    const std::string prefix = path.back() == '}' ? path : path + "/";
+    for (const std::string& name : names(fields, "primChildren", path)) {
+      prim(prefix + name, name, indent, p.children);
+      locate(path);
+    }
+    for (const std::string& set_name : names(fields, "variantSetChildren", path)) {
+      const auto set_index = find(path + "{" + set_name + "=}");
+      if (!set_index) continue;
+      std::vector<std::pair<std::string, std::size_t>> variants;
+      for (const std::string& variant : names(file_.fields_of(file_.specs()[*set_index]), "variantChildren", path))
+        if (const auto v = find(path + "{" + set_name + "=" + variant + "}")) variants.emplace_back(variant, *v);
+      if (variants.empty()) continue;
+      std::sort(variants.begin(), variants.end());
+      usda::VariantSet set;
+      set.span = mark();
+      set.name = as_read(set_name);
+      set.name_span = mark();
+      for (const auto& [variant, v] : variants) {
+        const std::string variant_path = path + "{" + set_name + "=" + variant + "}";
+        const std::vector<Field> variant_fields = file_.fields_of(file_.specs()[v]);
+        locate(variant_path);
+        usda::Variant var;
+        var.span = mark();
+        var.name_span = var.span;
+        var.name = as_read(variant);
+        var.body.specifier = usda::Specifier::Over;
+        var.body.name = var.name;
+        var.body.name_span = var.name_span;
+        metadata(variant_fields, variant_path, indent + 2, false, var.body.metadata);
+        var.body.open_brace_span = mark();
+        body(variant_fields, variant_path, indent + 2, var.body);
+        var.body.span = var.span;
+        set.variants.push_back(std::move(var));
+        locate(path);
+      }
+      p.variant_sets.push_back(std::move(set));
+    }
+  }
+
+  void property(const std::string& owner, const std::string& name, int indent, usda::Prim& p) {
+    const std::string path = owner + "." + name;
+    const auto index = find(path);
+    if (!index) return;
+    if (!valid_name(name, true)) throw UseText{};
+    const Spec& spec = file_.specs()[*index];
+    const std::vector<Field> fields = file_.fields_of(spec);
+    bool custom = false;
+    if (const Field* f = field(fields, "custom")) custom = values_.boolean(f->rep, "<" + path + "> custom");
+    std::optional<std::uint32_t> variability;
+    if (const Field* f = field(fields, "variability")) variability = values_.enum_value(f->rep, "<" + path + "> variability");
+    locate(path);
+    if (spec.type == SpecType::Relationship) {
+      usda::Relationship r;
+      r.custom = custom;
+      r.varying = variability == 0u;
+      r.name = name;
+      r.span = mark();
+      r.name_span = mark();
+      if (const Field* f = field(fields, "targetPaths")) r.targets = path_lists(f->rep, path + " targetPaths");
+      metadata(fields, path, indent + 1, false, r.metadata);
+      p.property_order.push_back({true, static_cast<std::uint32_t>(p.relationships.size())});
+      p.relationships.push_back(std::move(r));
+      return;
+    }
+    if (spec.type != SpecType::Attribute) throw UseText{};
+    std::string type;
+    if (const Field* f = field(fields, "typeName")) type = values_.token(f->rep, "<" + path + "> typeName");
+    if (!valid_type_name(type)) throw UseText{};
+    usda::Attribute a;
+    a.custom = custom;
+    a.variability = variability == 1u ? usda::Variability::Uniform : usda::Variability::Varying;
+    a.is_array = type.ends_with("[]");
+    a.type_name = a.is_array ? type.substr(0, type.size() - 2) : type;
+    a.name = name;
+    a.span = mark();
+    a.type_span = mark();
+    a.name_span = mark();
+    if (const Field* value = field(fields, "default")) {
+      const std::size_t from = text_.size();
+      try {
+        values_.append_literal(value->rep, "<" + path + "> default", indent, text_);
+        a.default_value = placeholder(from);
+        a.default_declaration_span = mark();
+      } catch (const UnsupportedValue&) {
+        text_.resize(from);  // left out, as the text writer leaves it out
+      }
+    }
+    metadata(fields, path, indent + 1, false, a.metadata);
+    if (const Field* samples = field(fields, "timeSamples")) {
+      try {
+        const auto list = values_.time_samples(samples->rep, "<" + path + "> timeSamples", indent + 1);
+        usda::TimeSamples ts;
+        ts.span = mark();
+        for (const auto& [time, v] : list) {
+          usda::TimeSample s;
+          s.time_span = mark();
+          s.time = usda::parse_number(time);
+          s.value = literal(v.text);
+          ts.samples.push_back(std::move(s));
+        }
+        ts.declaration_span = mark();
+        a.time_samples = std::move(ts);
+      } catch (const UnsupportedValue&) {
+        // Left out, as the text writer leaves it out.
+      }
+    }
+    if (const Field* connections = field(fields, "connectionPaths"))
+      a.connections = path_lists(connections->rep, path + " connectionPaths");
+    p.property_order.push_back({false, static_cast<std::uint32_t>(p.attributes.size())});
+    p.attributes.push_back(std::move(a));
+  }
+
+  // The declarations of a path list op (`prepend rel x = </a>`), one per list.
+  std::vector<usda::PathList> path_lists(ValueRep rep, const std::string& what) {
+    const ListOpValue op = values_.list_op(rep, "<" + what + ">");
+    std::vector<usda::PathList> out;
+    const auto declaration = [&](usda::ListOp kind) -> usda::PathList& {
+      out.emplace_back();
+      out.back().op = kind;
+      out.back().span = mark();
+      out.back().declaration_span = out.back().span;
+      return out.back();
+    };
+    if (op.is_explicit && op.parts.empty()) declaration(usda::ListOp::Explicit).none = true;
+    for (const auto& [kind, items] : op.parts) {
+      usda::PathList& list = declaration(list_op_of(kind));
+      if (items.empty() && kind == ItemOp::Explicit) list.none = true;
+      for (const std::string& item : items) {
+        // Items are `<path>`; anything else is left to the parser (which rejects it).
+        if (item.size() < 2 || item.front() != '<' || item.find('>') != item.size() - 1) throw UseText{};
+        usda::Value path;
+        path.kind = usda::ValueKind::Path;
+        path.text = item.substr(1, item.size() - 2);
+        path.span = mark();
+        list.paths.push_back(std::move(path));
+      }
+    }
+    return out;
+  }
+
+  // --- values, read from their literals -----------------------------------------------------
+  void read_value(usda::Value& v, std::string_view metadata_key, std::string_view attribute_type) {
+    if (v.kind != usda::ValueKind::None || !v.lazy) return;
+    auto r = usda::parse_value_at(*source_, id_, v.span.offset, v.span.end(), metadata_key, attribute_type);
+    if (!std::holds_alternative<usda::Value>(r)) throw UseText{};
+    v = std::move(std::get<usda::Value>(r));
+  }
+
+  void read_values(std::vector<usda::Metadata>& list) {
+    for (usda::Metadata& m : list) read_value(m.value, m.key, "");
+  }
+
+  void read_values(usda::Prim& p) {
+    read_values(p.metadata);
+    for (usda::Attribute& a : p.attributes) {
+      const std::string type = a.full_type();
+      if (a.default_value) read_value(*a.default_value, "", type);
+      if (a.time_samples)
+        for (usda::TimeSample& s : a.time_samples->samples) read_value(s.value, "", type);
+      read_values(a.metadata);
+    }
+    for (usda::Relationship& r : p.relationships) read_values(r.metadata);
+    for (usda::Prim& child : p.children) read_values(child);
+    for (usda::VariantSet& set : p.variant_sets)
+      for (usda::Variant& v : set.variants) read_values(v.body);
+  }
+
+  void read_values(usda::Layer& layer) {
+    read_values(layer.metadata);
+    for (usda::Prim& p : layer.prims) read_values(p);
+  }
+
+  const CrateFile& file_;
+  ValueReader values_;
+  FileId id_;
+  std::unordered_map<std::string_view, std::size_t> by_path_;
+  std::string text_;
+  std::vector<ObjectLocation> objects_;
+  std::uint32_t line_ = 1;
+  std::size_t line_start_ = 0;
+  const SourceFile* source_ = nullptr;
+};
+
+}  // namespace
+
+std::optional<CrateLayer> read_crate_layer(const std::string& path, std::string_view bytes, FileId id,
+                                           std::string& error) {
+  try {
+    const CrateFile file(bytes);
+    return Builder(file, id).run(path);
+  } catch (const CrateError&) {
+  } catch (const UnsupportedValue&) {
+  } catch (const UseText&) {
+  } catch (const std::bad_alloc&) {
+  } catch (const std::length_error&) {
+  }
+  auto source = crate_source(path, bytes, error);
+  if (!source) return std::nullopt;
+  return CrateLayer{std::move(source), nullptr};
+}
+
+}  // namespace assetlint::usdc
