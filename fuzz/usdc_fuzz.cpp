@@ -1,5 +1,7 @@
-// Crate (binary USD) bytes → the crate reader → the USDA it reads as → parse + compose +
-// every rule. The reader must end every input with text or an error naming the section.
+// Crate (binary USD) bytes → the crate reader → the USDA it reads as (`cat`); and lint, which
+// builds the layer from the crate's specs (or reads what it leaves through that text) →
+// compose + every rule. The reader must end every input with text or an error naming the
+// section.
 #include <cstdint>
 #include <string>
 #include <variant>

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <new>
 #include <stdexcept>
 #include <unordered_map>
@@ -13,6 +14,7 @@
 #include "formats/usdc/crate_file.h"
 #include "formats/usdc/crate_usda.h"
 #include "formats/usdc/crate_usda_style.h"
+#include "formats/usdc/crate_value_nodes.h"
 #include "formats/usdc/crate_values.h"
 
 namespace assetlint::usdc {
@@ -32,13 +34,11 @@ usda::ListOp list_op_of(ItemOp op) {
   }
 }
 
-// A name as the parser reads it back from its quoted form.
-std::string as_read(const std::string& name) {
-  const bool plain = std::none_of(name.begin(), name.end(), [](char ch) {
-    const auto c = static_cast<unsigned char>(ch);
-    return c < 0x20 || c == 0x7F || ch == '"' || ch == '\\';
-  });
-  return plain ? name : usda::decode_string(quoted(name));
+bool is_declaration_keyword(std::string_view word) {
+  for (std::string_view k : {"rel", "custom", "uniform", "config", "varying", "add", "append", "prepend", "delete",
+                             "reorder", "def", "over", "class", "variantSet"})
+    if (word == k) return true;
+  return false;
 }
 
 class Builder {
@@ -122,13 +122,18 @@ class Builder {
     return placeholder(from);
   }
 
-  usda::Metadata item(usda::ListOp op, std::string key, std::string_view value) {
+  usda::Metadata item(usda::ListOp op, std::string key) {
     usda::Metadata m;
     m.span = mark();
     if (op != usda::ListOp::Explicit) m.op_span = m.span;
     m.op = op;
     m.key = std::move(key);
     m.key_span = mark();
+    return m;
+  }
+
+  usda::Metadata item(usda::ListOp op, std::string key, std::string_view value) {
+    usda::Metadata m = item(op, std::move(key));
     m.value = literal(value);
     return m;
   }
@@ -174,17 +179,34 @@ class Builder {
           }
           continue;
         }
-        Literal value = values_.literal(f.rep, what, indent);
-        if (value.type == "bool") value.text = value.text == "1" ? "true" : "false";
+        if (key == "symmetryFunction") throw UseText{};  // the parser reads it with its statement only
         if (layer && key == "comment") {
-          if (value.type != "string") throw UseText{};
           // A bare string in layer metadata, which the parser reads as the doc shorthand.
+          const Literal value = values_.literal(f.rep, what, indent);
+          if (value.type != "string" && value.type != "token") throw UseText{};
           usda::Metadata m = item(usda::ListOp::Explicit, "doc", value.text);
           m.is_doc_shorthand = true;
           out.push_back(std::move(m));
-        } else {
-          out.push_back(item(usda::ListOp::Explicit, shown, value.text));
+          continue;
         }
+        usda::Metadata m = item(usda::ListOp::Explicit, shown);
+        // Arcs are read by the parser's arc grammar, which takes asset and prim paths only.
+        const bool arc = key == "references" || key == "payload" || key == "inherits" || key == "specializes";
+        std::optional<usda::Value> node;
+        if (!arc) node = value_node(values_, file_, f.rep, what, true, mark_);
+        if (node) {
+          m.value = std::move(*node);
+        } else {
+          const std::size_t from = text_.size();
+          try {
+            values_.append_literal(f.rep, what, indent, text_);
+          } catch (const UnsupportedValue&) {
+            text_.resize(from);
+            throw;
+          }
+          m.value = placeholder(from);
+        }
+        out.push_back(std::move(m));
       } catch (const UnsupportedValue&) {
         // Left out, as the text writer leaves it out.
       }
@@ -292,7 +314,9 @@ class Builder {
     const std::string path = owner + "." + name;
     const auto index = find(path);
     if (!index) return;
-    if (!valid_name(name, true)) throw UseText{};
+    // Names and types the parser would read otherwise (`a.b` as a field of `a`, a type
+    // that is a keyword) are left to it.
+    if (!valid_name(name, true) || name.find_first_of(".-") != std::string::npos) throw UseText{};
     const Spec& spec = file_.specs()[*index];
     const std::vector<Field> fields = file_.fields_of(spec);
     bool custom = false;
@@ -316,7 +340,7 @@ class Builder {
     if (spec.type != SpecType::Attribute) throw UseText{};
     std::string type;
     if (const Field* f = field(fields, "typeName")) type = values_.token(f->rep, "<" + path + "> typeName");
-    if (!valid_type_name(type)) throw UseText{};
+    if (!valid_type_name(type) || is_declaration_keyword(type)) throw UseText{};
     usda::Attribute a;
     a.custom = custom;
     a.variability = variability == 1u ? usda::Variability::Uniform : usda::Variability::Varying;
@@ -327,10 +351,15 @@ class Builder {
     a.type_span = mark();
     a.name_span = mark();
     if (const Field* value = field(fields, "default")) {
+      const std::string what = "<" + path + "> default";
       const std::size_t from = text_.size();
       try {
-        values_.append_literal(value->rep, "<" + path + "> default", indent, text_);
-        a.default_value = placeholder(from);
+        if (auto node = value_node(values_, file_, value->rep, what, false, mark_)) {
+          a.default_value = std::move(*node);
+        } else {
+          values_.append_literal(value->rep, what, indent, text_);
+          a.default_value = placeholder(from);
+        }
         a.default_declaration_span = mark();
       } catch (const UnsupportedValue&) {
         text_.resize(from);  // left out, as the text writer leaves it out
@@ -355,8 +384,13 @@ class Builder {
         // Left out, as the text writer leaves it out.
       }
     }
-    if (const Field* connections = field(fields, "connectionPaths"))
-      a.connections = path_lists(connections->rep, path + " connectionPaths");
+    const Field* connections = field(fields, "connectionPaths");
+    if (connections) a.connections = path_lists(connections->rep, path + " connectionPaths");
+    // The text declares the attribute with its default or metadata, or else (a bare
+    // declaration) when it has neither samples nor connections, or with those.
+    const bool declared = a.default_value || !a.metadata.empty() || (!field(fields, "timeSamples") && !connections) ||
+                          a.time_samples || !a.connections.empty();
+    if (!declared) return;
     p.property_order.push_back({false, static_cast<std::uint32_t>(p.attributes.size())});
     p.attributes.push_back(std::move(a));
   }
@@ -430,6 +464,7 @@ class Builder {
   std::uint32_t line_ = 1;
   std::size_t line_start_ = 0;
   const SourceFile* source_ = nullptr;
+  const std::function<Span()> mark_ = [this] { return mark(); };
 };
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include "formats/usdc/crate_values.h"
 
-#include "formats/usdc/crate_usda_style.h"
 
 #include <fmt/format.h>
 
@@ -9,108 +8,20 @@
 #include <cmath>
 #include <cstring>
 
+#include "formats/usdc/crate_types.h"
+#include "formats/usdc/crate_usda_style.h"
+
 namespace assetlint::usdc {
 namespace {
 
-// Crate's type numbers (crateDataTypes.h).
-enum Type : unsigned {
-  kBool = 1, kUChar, kInt, kUInt, kInt64, kUInt64, kHalf, kFloat, kDouble, kString, kToken, kAssetPath,
-  kMatrix2d, kMatrix3d, kMatrix4d, kQuatd, kQuatf, kQuath, kVec2d, kVec2f, kVec2h, kVec2i, kVec3d, kVec3f,
-  kVec3h, kVec3i, kVec4d, kVec4f, kVec4h, kVec4i, kDictionary, kTokenListOp, kStringListOp, kPathListOp,
-  kReferenceListOp, kIntListOp, kInt64ListOp, kUIntListOp, kUInt64ListOp, kPathVector, kTokenVector,
-  kSpecifier, kPermission, kVariability, kVariantSelectionMap, kTimeSamples, kPayload, kDoubleVector,
-  kLayerOffsetVector, kStringVector, kValueBlock, kValue, kUnregisteredValue, kUnregisteredValueListOp,
-  kPayloadListOp, kTimeCode, kPathExpression, kRelocates
-};
-
 constexpr int kMaxValueDepth = 32;
 constexpr std::size_t kMinCompressedArray = 16;
-
-enum class Num { Bool, U8, I32, U32, I64, U64, Half, Float, Double, StringIdx, TokenIdx, AssetIdx };
-
-// An element type: its number kind, how many components, matrix rows (0: not a matrix),
-// quaternion (stored x, y, z, w).
-struct Element {
-  const char* name;
-  Num num;
-  int components;
-  int rows;
-  bool quat;
-};
-
-const Element* element_of(unsigned type) {
-  static const Element table[] = {
-      {"bool", Num::Bool, 1, 0, false},        {"uchar", Num::U8, 1, 0, false},
-      {"int", Num::I32, 1, 0, false},          {"uint", Num::U32, 1, 0, false},
-      {"int64", Num::I64, 1, 0, false},        {"uint64", Num::U64, 1, 0, false},
-      {"half", Num::Half, 1, 0, false},        {"float", Num::Float, 1, 0, false},
-      {"double", Num::Double, 1, 0, false},    {"string", Num::StringIdx, 1, 0, false},
-      {"token", Num::TokenIdx, 1, 0, false},   {"asset", Num::AssetIdx, 1, 0, false},
-      {"matrix2d", Num::Double, 4, 2, false},  {"matrix3d", Num::Double, 9, 3, false},
-      {"matrix4d", Num::Double, 16, 4, false}, {"quatd", Num::Double, 4, 0, true},
-      {"quatf", Num::Float, 4, 0, true},       {"quath", Num::Half, 4, 0, true},
-      {"double2", Num::Double, 2, 0, false},   {"float2", Num::Float, 2, 0, false},
-      {"half2", Num::Half, 2, 0, false},       {"int2", Num::I32, 2, 0, false},
-      {"double3", Num::Double, 3, 0, false},   {"float3", Num::Float, 3, 0, false},
-      {"half3", Num::Half, 3, 0, false},       {"int3", Num::I32, 3, 0, false},
-      {"double4", Num::Double, 4, 0, false},   {"float4", Num::Float, 4, 0, false},
-      {"half4", Num::Half, 4, 0, false},       {"int4", Num::I32, 4, 0, false},
-  };
-  static const Element timecode{"timecode", Num::Double, 1, 0, false};
-  if (type >= kBool && type <= kVec4i) return &table[type - kBool];
-  if (type == kTimeCode) return &timecode;
-  return nullptr;
-}
-
-std::size_t size_of(Num n) {
-  switch (n) {
-    case Num::Bool:
-    case Num::U8: return 1;
-    case Num::Half: return 2;
-    case Num::I64:
-    case Num::U64:
-    case Num::Double: return 8;
-    default: return 4;
-  }
-}
-
-float half_to_float(std::uint16_t h) {
-  const std::uint32_t sign = (h >> 15) & 1, exponent = (h >> 10) & 0x1F, mantissa = h & 0x3FF;
-  float v;
-  if (exponent == 0) v = std::ldexp(static_cast<float>(mantissa), -24);
-  else if (exponent == 31) v = mantissa ? std::nanf("") : INFINITY;
-  else v = std::ldexp(static_cast<float>(mantissa | 0x400), static_cast<int>(exponent) - 25);
-  return sign ? -v : v;
-}
-
-// Formats into a buffer on the stack: appending through a back inserter costs a call per
-// character, and mesh arrays hold millions of numbers.
-template <class T>
-void append_number(std::string& out, T v) {
-  char buffer[48];
-  const auto written = fmt::format_to_n(buffer, sizeof buffer, "{}", v);
-  out.append(buffer, std::min(written.size, sizeof buffer));
-}
-
-template <class F>
-void append_real(std::string& out, F v) {
-  if (std::isnan(v)) out += "nan";
-  else if (std::isinf(v)) out += v < 0 ? "-inf" : "inf";
-  else append_number(out, v);
-}
 
 template <class F>
 std::string real(F v) {
   std::string out;
   append_real(out, v);
   return out;
-}
-
-template <class T>
-T load(const char* p) {
-  T v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
 }
 
 bool identifier(std::string_view s) {
@@ -196,58 +107,6 @@ bool ValueReader::is_list_op(ValueRep rep) const {
 
 namespace {
 
-// One component as USDA writes it.
-// Appends one stored component as USDA writes it. Large arrays are millions of these: they are
-// formatted in place, without a string per component.
-void append_component(std::string& out, const CrateFile& file, Num num, const char* p, const std::string& what) {
-  const auto integer = [&](auto v) { append_number(out, v); };
-  switch (num) {
-    case Num::Bool: out += *p ? "1" : "0"; return;
-    case Num::U8: integer(load<std::uint8_t>(p)); return;
-    case Num::I32: integer(load<std::int32_t>(p)); return;
-    case Num::U32: integer(load<std::uint32_t>(p)); return;
-    case Num::I64: integer(load<std::int64_t>(p)); return;
-    case Num::U64: integer(load<std::uint64_t>(p)); return;
-    case Num::Half: append_real(out, half_to_float(load<std::uint16_t>(p))); return;
-    case Num::Float: append_real(out, load<float>(p)); return;
-    case Num::Double: append_real(out, load<double>(p)); return;
-    case Num::StringIdx: out += quoted(file.string(load<std::uint32_t>(p), what.c_str())); return;
-    case Num::TokenIdx: out += quoted(file.token(load<std::uint32_t>(p), what.c_str())); return;
-    case Num::AssetIdx: out += asset_literal(file.string(load<std::uint32_t>(p), what.c_str())); return;
-  }
-}
-
-// A whole element (scalar, vector, quaternion, matrix) from its stored components.
-void append_element(std::string& out, const CrateFile& file, const Element& e, const char* p, const std::string& what) {
-  const std::size_t size = size_of(e.num);
-  if (e.components == 1) {
-    append_component(out, file, e.num, p, what);
-    return;
-  }
-  // Crate stores a quaternion x, y, z, w; USDA writes w first.
-  const auto stored = [&](int i) {
-    const int index = e.quat ? (i + 3) % 4 : i;
-    return p + static_cast<std::size_t>(index) * size;
-  };
-  out += '(';
-  if (e.rows) {
-    for (int r = 0; r < e.rows; ++r) {
-      out += r ? ", (" : "(";
-      for (int k = 0; k < e.rows; ++k) {
-        if (k) out += ", ";
-        append_component(out, file, e.num, stored(r * e.rows + k), what);
-      }
-      out += ')';
-    }
-  } else {
-    for (int i = 0; i < e.components; ++i) {
-      if (i) out += ", ";
-      append_component(out, file, e.num, stored(i), what);
-    }
-  }
-  out += ')';
-}
-
 std::string element_text(const CrateFile& file, const Element& e, const char* p, const std::string& what) {
   std::string out;
   append_element(out, file, e, p, what);
@@ -274,63 +133,69 @@ std::string ValueReader::append_literal(ValueRep rep, const std::string& what, i
   return std::move(value.type);
 }
 
+std::string ValueReader::element_bytes(ValueRep rep, const Element& element, const std::string& what) const {
+  const Element* e = &element;
+  const std::size_t size = size_of(e->num);
+  std::string bytes(size * static_cast<std::size_t>(e->components), '\0');
+  const std::uint32_t low = static_cast<std::uint32_t>(rep.payload());
+  const bool always_inlined = e->components == 1 && size <= 4;
+  if (always_inlined) {
+    std::memcpy(bytes.data(), &low, size);
+  } else if (rep.is_inlined()) {
+    // Doubles stored as floats, 64-bit integers as 32-bit ones, vectors as int8
+    // components, matrices as an int8 diagonal.
+    if (e->num == Num::Double && e->components == 1) {
+      const double d = load<float>(reinterpret_cast<const char*>(&low));
+      std::memcpy(bytes.data(), &d, 8);
+    } else if (e->num == Num::I64) {
+      const std::int64_t v = static_cast<std::int32_t>(low);
+      std::memcpy(bytes.data(), &v, 8);
+    } else if (e->num == Num::U64) {
+      const std::uint64_t v = low;
+      std::memcpy(bytes.data(), &v, 8);
+    } else if (!e->quat && e->components > 1) {
+      std::int8_t small[4];
+      std::memcpy(small, &low, 4);
+      const int n = e->rows ? e->rows : e->components;
+      for (int i = 0; i < e->components; ++i) {
+        const bool diagonal = e->rows && i % (e->rows + 1) == 0;
+        const int source = e->rows ? i / (e->rows + 1) : i;
+        const double v = e->rows ? (diagonal ? small[source] : 0.0) : (i < n ? small[i] : 0);
+        char* dst = bytes.data() + static_cast<std::size_t>(i) * size;
+        switch (e->num) {
+          case Num::Double: std::memcpy(dst, &v, 8); break;
+          case Num::Float: { const float f = static_cast<float>(v); std::memcpy(dst, &f, 4); break; }
+          case Num::I32: { const std::int32_t k = static_cast<std::int32_t>(v); std::memcpy(dst, &k, 4); break; }
+          case Num::Half: {
+            // int8 values are exact in half precision: build the bits from the float.
+            const float f = static_cast<float>(v);
+            std::uint32_t b;
+            std::memcpy(&b, &f, 4);
+            std::uint16_t h = static_cast<std::uint16_t>((b >> 16) & 0x8000);
+            if (f != 0.0f) h |= static_cast<std::uint16_t>((((b >> 23) & 0xFF) - 112) << 10 | ((b >> 13) & 0x3FF));
+            std::memcpy(dst, &h, 2);
+            break;
+          }
+          default: break;
+        }
+      }
+    } else {
+      fail(what, fmt::format("value of type {} cannot be inlined", e->name));
+    }
+  } else {
+    Cursor c = at(rep, what);
+    c.read_bytes(bytes.data(), bytes.size());
+  }
+  return bytes;
+}
+
 Literal ValueReader::scalar(ValueRep rep, const std::string& what, int indent) {
   const unsigned type = rep.type();
   if (const Element* e = element_of(type)) {
     // An asset path value holds a token index (in arrays, string indexes).
     if (e->num == Num::AssetIdx)
       return {e->name, asset_literal(file_.token(static_cast<std::uint32_t>(rep.payload()), what.c_str()))};
-    const std::size_t size = size_of(e->num);
-    std::string bytes(size * static_cast<std::size_t>(e->components), '\0');
-    const std::uint32_t low = static_cast<std::uint32_t>(rep.payload());
-    const bool always_inlined = e->components == 1 && size <= 4;
-    if (always_inlined) {
-      std::memcpy(bytes.data(), &low, size);
-    } else if (rep.is_inlined()) {
-      // Doubles stored as floats, 64-bit integers as 32-bit ones, vectors as int8
-      // components, matrices as an int8 diagonal.
-      if (e->num == Num::Double && e->components == 1) {
-        const double d = load<float>(reinterpret_cast<const char*>(&low));
-        std::memcpy(bytes.data(), &d, 8);
-      } else if (e->num == Num::I64) {
-        const std::int64_t v = static_cast<std::int32_t>(low);
-        std::memcpy(bytes.data(), &v, 8);
-      } else if (e->num == Num::U64) {
-        const std::uint64_t v = low;
-        std::memcpy(bytes.data(), &v, 8);
-      } else if (!e->quat && e->components > 1) {
-        std::int8_t small[4];
-        std::memcpy(small, &low, 4);
-        const int n = e->rows ? e->rows : e->components;
-        for (int i = 0; i < e->components; ++i) {
-          const bool diagonal = e->rows && i % (e->rows + 1) == 0;
-          const int source = e->rows ? i / (e->rows + 1) : i;
-          const double v = e->rows ? (diagonal ? small[source] : 0.0) : (i < n ? small[i] : 0);
-          char* dst = bytes.data() + static_cast<std::size_t>(i) * size;
-          switch (e->num) {
-            case Num::Double: std::memcpy(dst, &v, 8); break;
-            case Num::Float: { const float f = static_cast<float>(v); std::memcpy(dst, &f, 4); break; }
-            case Num::I32: { const std::int32_t k = static_cast<std::int32_t>(v); std::memcpy(dst, &k, 4); break; }
-            case Num::Half: {
-              // int8 values are exact in half precision: build the bits from the float.
-              const float f = static_cast<float>(v);
-              std::uint32_t b;
-              std::memcpy(&b, &f, 4);
-              std::uint16_t h = static_cast<std::uint16_t>((b >> 16) & 0x8000);
-              if (f != 0.0f) h |= static_cast<std::uint16_t>((((b >> 23) & 0xFF) - 112) << 10 | ((b >> 13) & 0x3FF));
-              std::memcpy(dst, &h, 2);
-              break;
-            }
-            default: break;
-          }
-        }
-      } else {
-        fail(what, fmt::format("value of type {} cannot be inlined", e->name));
-      }
-    } else {
-      Cursor c = at(rep, what);
-      c.read_bytes(bytes.data(), bytes.size());
-    }
+    const std::string bytes = element_bytes(rep, *e, what);
     return {e->name, element_text(file_, *e, bytes.data(), what)};
   }
   const std::uint32_t low = static_cast<std::uint32_t>(rep.payload());
@@ -392,21 +257,19 @@ Literal ValueReader::scalar(ValueRep rep, const std::string& what, int indent) {
   throw UnsupportedValue{what};
 }
 
-std::string ValueReader::array(ValueRep rep, const std::string& what, std::string& out) {
+ArrayItems ValueReader::array_items(ValueRep rep, const std::string& what) const {
   const Element* e = element_of(rep.type());
   if (!e) fail(what, fmt::format("type {} cannot be an array", rep.type()));
-  std::string type = std::string(e->name) + "[]";
-  if (rep.payload() == 0) {
-    out += "[]";
-    return type;
-  }
+  ArrayItems result;
+  result.element = e;
+  if (rep.payload() == 0) return result;
   Cursor c = at(rep, what);
   const Version& v = file_.version();
   if (!v.at_least(0, 5)) c.read<std::uint32_t>();  // rank, written before 0.5.0
   const std::uint64_t claimed = v.at_least(0, 7) ? c.read<std::uint64_t>() : c.read<std::uint32_t>();
   const std::size_t size = size_of(e->num);
   const std::size_t element_bytes = size * static_cast<std::size_t>(e->components);
-  std::string data;
+  std::string& data = result.storage;
   const bool integer = e->components == 1 && (e->num == Num::I32 || e->num == Num::U32 || e->num == Num::I64 || e->num == Num::U64);
   const bool real_number = e->components == 1 && (e->num == Num::Half || e->num == Num::Float || e->num == Num::Double);
   if (rep.is_compressed() && claimed >= kMinCompressedArray && ((integer && v.at_least(0, 5)) || (real_number && v.at_least(0, 6)))) {
@@ -464,21 +327,28 @@ std::string ValueReader::array(ValueRep rep, const std::string& what, std::strin
       }
     }
   }
-  std::string_view items = data;
   if (data.empty()) {
     const std::size_t n = c.count(claimed, element_bytes, "array items");
-    items = c.take(n * element_bytes);
+    result.raw = c.take(n * element_bytes);
   }
-  const std::size_t n = items.size() / element_bytes;
+  result.count = result.bytes().size() / element_bytes;
+  return result;
+}
+
+std::string ValueReader::array(ValueRep rep, const std::string& what, std::string& out) {
+  const ArrayItems a = array_items(rep, what);
+  const Element* e = a.element;
+  const std::size_t element_bytes = size_of(e->num) * static_cast<std::size_t>(e->components);
+  const std::size_t n = a.count;
   // About ten characters a component and a separator: one allocation for mesh arrays.
   out.reserve(out.size() + n * (static_cast<std::size_t>(e->components) * 10 + 4) + 2);
   out += '[';
   for (std::size_t i = 0; i < n; ++i) {
     if (i) out += ", ";
-    append_element(out, file_, *e, items.data() + i * element_bytes, what);
+    append_element(out, file_, *e, a.bytes().data() + i * element_bytes, what);
   }
   out += ']';
-  return type;
+  return std::string(e->name) + "[]";
 }
 
 std::string ValueReader::dictionary(Cursor& c, const std::string& what, int indent) {

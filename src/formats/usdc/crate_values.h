@@ -4,6 +4,7 @@
 // round-trip form, tokens quoted, asset paths in @...@).
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -34,6 +35,17 @@ struct ListOpValue {
   std::vector<std::pair<ItemOp, std::vector<std::string>>> parts;
 };
 
+struct Element;
+
+// The items of an array value, decompressed: `count` elements, stored as crate stores them.
+struct ArrayItems {
+  const Element* element = nullptr;
+  std::string storage;   // decoded items (compressed arrays)
+  std::string_view raw;  // the items in the file (uncompressed arrays)
+  std::size_t count = 0;
+  std::string_view bytes() const { return storage.empty() ? raw : std::string_view(storage); }
+};
+
 class ValueReader {
  public:
   explicit ValueReader(const CrateFile& file) : file_(file) {}
@@ -50,6 +62,10 @@ class ValueReader {
   bool boolean(ValueRep rep, const std::string& what);
   std::vector<std::pair<std::string, std::string>> string_map(ValueRep rep, const std::string& what);
   std::vector<std::pair<double, double>> layer_offsets(ValueRep rep, const std::string& what);
+  // The decoded items of an array value, and one element's stored bytes (inlined forms
+  // expanded): what the nodes of crate_value_nodes.h are built from.
+  ArrayItems array_items(ValueRep rep, const std::string& what) const;
+  std::string element_bytes(ValueRep rep, const Element& element, const std::string& what) const;
   std::vector<std::pair<std::string, Literal>> time_samples(ValueRep rep, const std::string& what, int indent);
 
  private:

@@ -1,0 +1,115 @@
+#include "formats/usdc/crate_value_nodes.h"
+
+#include <algorithm>
+
+#include "formats/usda/literals.h"
+#include "formats/usdc/crate_types.h"
+
+namespace assetlint::usdc {
+namespace {
+
+using Mark = std::function<Span()>;
+
+usda::Value component_node(const CrateFile& file, Num num, const char* p, const std::string& what, const Mark& mark) {
+  usda::Value v;
+  v.span = mark();
+  switch (num) {
+    case Num::StringIdx:
+    case Num::TokenIdx: {
+      const auto index = load<std::uint32_t>(p);
+      v.kind = usda::ValueKind::String;
+      v.text = as_read(num == Num::TokenIdx ? file.token(index, what.c_str()) : file.string(index, what.c_str()));
+      return v;
+    }
+    case Num::AssetIdx:
+      v.kind = usda::ValueKind::AssetPath;
+      v.text = usda::decode_asset_path(asset_literal(file.string(load<std::uint32_t>(p), what.c_str())));
+      return v;
+    default: break;
+  }
+  std::string text;
+  append_component(text, file, num, p, what);
+  v.kind = usda::ValueKind::Number;
+  v.number = usda::parse_number(text);
+  // What the lexer calls a float: a fraction, an exponent, inf or nan.
+  v.is_integer = text.find_first_of(".eEin") == std::string::npos;
+  return v;
+}
+
+usda::Value element_node(const CrateFile& file, const Element& e, const char* p, const std::string& what,
+                         const Mark& mark) {
+  if (e.components == 1) return component_node(file, e.num, p, what, mark);
+  const std::size_t size = size_of(e.num);
+  // Crate stores a quaternion x, y, z, w; USDA writes w first.
+  const auto stored = [&](int i) { return p + static_cast<std::size_t>(e.quat ? (i + 3) % 4 : i) * size; };
+  usda::Value tuple;
+  tuple.kind = usda::ValueKind::Tuple;
+  tuple.span = mark();
+  if (e.rows) {
+    tuple.elements.reserve(static_cast<std::size_t>(e.rows));
+    for (int r = 0; r < e.rows; ++r) {
+      usda::Value row;
+      row.kind = usda::ValueKind::Tuple;
+      row.span = mark();
+      row.elements.reserve(static_cast<std::size_t>(e.rows));
+      for (int k = 0; k < e.rows; ++k) row.elements.push_back(component_node(file, e.num, stored(r * e.rows + k), what, mark));
+      row.count = row.elements.size();
+      tuple.elements.push_back(std::move(row));
+    }
+  } else {
+    tuple.elements.reserve(static_cast<std::size_t>(e.components));
+    for (int i = 0; i < e.components; ++i) tuple.elements.push_back(component_node(file, e.num, stored(i), what, mark));
+  }
+  tuple.count = tuple.elements.size();
+  return tuple;
+}
+
+}  // namespace
+
+std::string as_read(const std::string& s) {
+  const bool plain = std::none_of(s.begin(), s.end(), [](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return c < 0x20 || c == 0x7F || ch == '"' || ch == '\\';
+  });
+  return plain ? s : usda::decode_string(quoted(s));
+}
+
+std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile& file, ValueRep rep,
+                                      const std::string& what, bool in_metadata, const std::function<Span()>& mark) {
+  if (values.is_list_op(rep)) return std::nullopt;
+  const Element* e = element_of(rep.type());
+  if (!e) return std::nullopt;
+  if (rep.is_array()) {
+    const ArrayItems a = values.array_items(rep, what);
+    const bool numeric = e->num != Num::StringIdx && e->num != Num::TokenIdx && e->num != Num::AssetIdx;
+    if (numeric && a.count > kEagerArrayItems) return std::nullopt;
+    usda::Value list;
+    list.kind = usda::ValueKind::List;
+    list.span = mark();
+    const std::size_t element_bytes = size_of(e->num) * static_cast<std::size_t>(e->components);
+    list.elements.reserve(a.count);
+    for (std::size_t i = 0; i < a.count; ++i)
+      list.elements.push_back(element_node(file, *e, a.bytes().data() + i * element_bytes, what, mark));
+    list.count = list.elements.size();
+    return list;
+  }
+  if (e->num == Num::AssetIdx) {
+    // An asset path value holds a token index (in arrays, string indexes).
+    usda::Value v;
+    v.kind = usda::ValueKind::AssetPath;
+    v.span = mark();
+    v.text = usda::decode_asset_path(asset_literal(file.token(static_cast<std::uint32_t>(rep.payload()), what.c_str())));
+    return v;
+  }
+  const std::string bytes = values.element_bytes(rep, *e, what);
+  if (in_metadata && e->num == Num::Bool) {
+    usda::Value v;
+    v.kind = usda::ValueKind::Identifier;
+    v.span = mark();
+    v.text = bytes[0] ? "true" : "false";
+    return v;
+  }
+  return element_node(file, *e, bytes.data(), what, mark);
+}
+
+}  // namespace assetlint::usdc

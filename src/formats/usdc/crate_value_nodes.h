@@ -1,0 +1,29 @@
+#pragma once
+// The common values of a crate layer (numbers, vectors, quaternions, matrices, tokens,
+// strings, asset paths, and short arrays of them) built as the nodes the USDA parser reads
+// from their literals, without writing the literals: numbers are formatted as the text
+// writer formats them and read back as the parser reads them, so each node is the one the
+// text gives. Other values are read from their literal (crate_layer.cpp).
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "formats/usda/ast.h"
+#include "formats/usdc/crate_values.h"
+#include "model/source.h"
+
+namespace assetlint::usdc {
+
+// Numeric arrays longer than this are left to the parser, which keeps them lazy.
+inline constexpr std::size_t kEagerArrayItems = 16;
+
+// Nullopt for a value of another kind or a numeric array of more than kEagerArrayItems.
+// `in_metadata`: a bool reads as the identifier true/false (the writer spells it so there).
+// `mark` gives each node its span.
+std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile& file, ValueRep rep,
+                                      const std::string& what, bool in_metadata, const std::function<Span()>& mark);
+
+// A name or string as the parser reads back its quoted form.
+std::string as_read(const std::string& s);
+
+}  // namespace assetlint::usdc
