@@ -58,8 +58,8 @@ class Builder {
     const auto root = find("/");
     std::vector<Field> fields;
     if (root) fields = file_.fields_of(file_.specs()[*root]);
-    metadata(fields, "/", 1, true, layer.metadata);
-    for (const std::string& name : names(fields, "primChildren", "/")) prim("/" + name, name, 0, layer.prims);
+    metadata(fields, 1, true, layer.metadata);
+    for (const std::string& name : names(fields, "primChildren")) prim("/" + name, name, 0, layer.prims);
     auto source = std::make_shared<const SourceFile>(path, std::move(text_), std::move(objects_));
     source_ = source.get();
     read_values(layer);
@@ -79,10 +79,10 @@ class Builder {
     return nullptr;
   }
 
-  std::vector<std::string> names(const std::vector<Field>& fields, std::string_view key, const std::string& path) {
+  std::vector<std::string> names(const std::vector<Field>& fields, std::string_view key) {
     const Field* f = field(fields, key);
     if (!f) return {};
-    return values_.tokens(f->rep, fmt::format("<{}> {}", path, key));
+    return values_.tokens(f->rep, kWhat);
   }
 
   // --- the source: a line per object, a character per node, the values' literals ---------
@@ -139,12 +139,12 @@ class Builder {
   }
 
   // --- structure, in the order of the text writer -----------------------------------------
-  void metadata(const std::vector<Field>& fields, const std::string& path, int indent, bool layer,
+  void metadata(const std::vector<Field>& fields, int indent, bool layer,
                 std::vector<usda::Metadata>& out) {
     for (const Field& f : fields) {
       const std::string& key = file_.token(f.token, "FIELDS");
       if (is_structural_field(key)) continue;
-      const std::string what = fmt::format("<{}> {}", path, key);
+      const std::string& what = kWhat;
       try {
         if (key == "subLayers") {
           std::vector<std::pair<double, double>> offsets;
@@ -222,11 +222,11 @@ class Builder {
     usda::Prim p;
     p.specifier = usda::Specifier::Over;
     if (const Field* f = field(fields, "specifier")) {
-      const auto v = values_.enum_value(f->rep, "<" + path + "> specifier");
+      const auto v = values_.enum_value(f->rep, kWhat);
       p.specifier = v == 0 ? usda::Specifier::Def : v == 1 ? usda::Specifier::Over : usda::Specifier::Class;
     }
     if (const Field* f = field(fields, "typeName")) {
-      p.type_name = values_.token(f->rep, "<" + path + "> typeName");
+      p.type_name = values_.token(f->rep, kWhat);
       if (!valid_name(p.type_name, false)) throw UseText{};
     }
     locate(path);
@@ -235,7 +235,7 @@ class Builder {
     if (!p.type_name.empty()) p.type_span = mark();
     p.name = as_read(name);
     p.name_span = mark();
-    metadata(fields, path, indent + 1, false, p.metadata);
+    metadata(fields, indent + 1, false, p.metadata);
     p.open_brace_span = mark();
     body(fields, path, indent + 1, p);
     siblings.push_back(std::move(p));
@@ -263,24 +263,29 @@ class Builder {
         usda::ReorderStatement r;
         r.span = mark();
         r.what = std::string_view(order) == "primOrder" ? "nameChildren" : "properties";
-        r.names = name_list(values_.tokens(f->rep, "<" + path + "> " + order));
+        r.names = name_list(values_.tokens(f->rep, kWhat));
         p.reorders.push_back(std::move(r));
       }
     }
-    std::vector<std::string> properties = names(fields, "properties", path);
+    std::vector<std::string> properties = names(fields, "properties");
     std::stable_sort(properties.begin(), properties.end(),
                      [](const std::string& a, const std::string& b) { return dictionary_less(a, b); });
+    // Attributes and prims are large nodes: moved once each instead of on every regrowth.
+    p.attributes.reserve(properties.size());
+    p.property_order.reserve(properties.size());
     for (const std::string& name : properties) property(path, name, indent, p);
     const std::string prefix = path.back() == '}' ? path : path + "/";
-    for (const std::string& name : names(fields, "primChildren", path)) {
+    const std::vector<std::string> children = names(fields, "primChildren");
+    p.children.reserve(children.size());
+    for (const std::string& name : children) {
       prim(prefix + name, name, indent, p.children);
       locate(path);
     }
-    for (const std::string& set_name : names(fields, "variantSetChildren", path)) {
+    for (const std::string& set_name : names(fields, "variantSetChildren")) {
       const auto set_index = find(path + "{" + set_name + "=}");
       if (!set_index) continue;
       std::vector<std::pair<std::string, std::size_t>> variants;
-      for (const std::string& variant : names(file_.fields_of(file_.specs()[*set_index]), "variantChildren", path))
+      for (const std::string& variant : names(file_.fields_of(file_.specs()[*set_index]), "variantChildren"))
         if (const auto v = find(path + "{" + set_name + "=" + variant + "}")) variants.emplace_back(variant, *v);
       if (variants.empty()) continue;
       std::sort(variants.begin(), variants.end());
@@ -299,7 +304,7 @@ class Builder {
         var.body.specifier = usda::Specifier::Over;
         var.body.name = var.name;
         var.body.name_span = var.name_span;
-        metadata(variant_fields, variant_path, indent + 2, false, var.body.metadata);
+        metadata(variant_fields, indent + 2, false, var.body.metadata);
         var.body.open_brace_span = mark();
         body(variant_fields, variant_path, indent + 2, var.body);
         var.body.span = var.span;
@@ -320,9 +325,9 @@ class Builder {
     const Spec& spec = file_.specs()[*index];
     const std::vector<Field> fields = file_.fields_of(spec);
     bool custom = false;
-    if (const Field* f = field(fields, "custom")) custom = values_.boolean(f->rep, "<" + path + "> custom");
+    if (const Field* f = field(fields, "custom")) custom = values_.boolean(f->rep, kWhat);
     std::optional<std::uint32_t> variability;
-    if (const Field* f = field(fields, "variability")) variability = values_.enum_value(f->rep, "<" + path + "> variability");
+    if (const Field* f = field(fields, "variability")) variability = values_.enum_value(f->rep, kWhat);
     locate(path);
     if (spec.type == SpecType::Relationship) {
       usda::Relationship r;
@@ -331,15 +336,15 @@ class Builder {
       r.name = name;
       r.span = mark();
       r.name_span = mark();
-      if (const Field* f = field(fields, "targetPaths")) r.targets = path_lists(f->rep, path + " targetPaths");
-      metadata(fields, path, indent + 1, false, r.metadata);
+      if (const Field* f = field(fields, "targetPaths")) r.targets = path_lists(f->rep);
+      metadata(fields, indent + 1, false, r.metadata);
       p.property_order.push_back({true, static_cast<std::uint32_t>(p.relationships.size())});
       p.relationships.push_back(std::move(r));
       return;
     }
     if (spec.type != SpecType::Attribute) throw UseText{};
     std::string type;
-    if (const Field* f = field(fields, "typeName")) type = values_.token(f->rep, "<" + path + "> typeName");
+    if (const Field* f = field(fields, "typeName")) type = values_.token(f->rep, kWhat);
     if (!valid_type_name(type) || is_declaration_keyword(type)) throw UseText{};
     usda::Attribute a;
     a.custom = custom;
@@ -351,7 +356,7 @@ class Builder {
     a.type_span = mark();
     a.name_span = mark();
     if (const Field* value = field(fields, "default")) {
-      const std::string what = "<" + path + "> default";
+      const std::string& what = kWhat;
       const std::size_t from = text_.size();
       try {
         if (auto node = value_node(values_, file_, value->rep, what, false, mark_)) {
@@ -365,10 +370,10 @@ class Builder {
         text_.resize(from);  // left out, as the text writer leaves it out
       }
     }
-    metadata(fields, path, indent + 1, false, a.metadata);
+    metadata(fields, indent + 1, false, a.metadata);
     if (const Field* samples = field(fields, "timeSamples")) {
       try {
-        const auto list = values_.time_samples(samples->rep, "<" + path + "> timeSamples", indent + 1);
+        const auto list = values_.time_samples(samples->rep, kWhat, indent + 1);
         usda::TimeSamples ts;
         ts.span = mark();
         for (const auto& [time, v] : list) {
@@ -385,7 +390,7 @@ class Builder {
       }
     }
     const Field* connections = field(fields, "connectionPaths");
-    if (connections) a.connections = path_lists(connections->rep, path + " connectionPaths");
+    if (connections) a.connections = path_lists(connections->rep);
     // The text declares the attribute with its default or metadata, or else (a bare
     // declaration) when it has neither samples nor connections, or with those.
     const bool declared = a.default_value || !a.metadata.empty() || (!field(fields, "timeSamples") && !connections) ||
@@ -396,8 +401,8 @@ class Builder {
   }
 
   // The declarations of a path list op (`prepend rel x = </a>`), one per list.
-  std::vector<usda::PathList> path_lists(ValueRep rep, const std::string& what) {
-    const ListOpValue op = values_.list_op(rep, "<" + what + ">");
+  std::vector<usda::PathList> path_lists(ValueRep rep) {
+    const ListOpValue op = values_.list_op(rep, kWhat);
     std::vector<usda::PathList> out;
     const auto declaration = [&](usda::ListOp kind) -> usda::PathList& {
       out.emplace_back();
@@ -455,6 +460,9 @@ class Builder {
     for (usda::Prim& p : layer.prims) read_values(p);
   }
 
+  // What the value reader names in its errors. An error here hands the file to the text
+  // path, which reports it with the field it is in: it is never shown from here.
+  const std::string kWhat = "crate layer";
   const CrateFile& file_;
   ValueReader values_;
   FileId id_;
