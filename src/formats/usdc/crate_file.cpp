@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
-#include <unordered_set>
 
 namespace assetlint::usdc {
 namespace {
@@ -340,10 +339,10 @@ void CrateFile::read_specs() {
   const auto sets = read_compressed_u32(c, static_cast<std::size_t>(n));
   const auto types = read_compressed_u32(c, static_cast<std::size_t>(n));
   specs_.resize(static_cast<std::size_t>(n));
-  std::unordered_set<std::uint32_t> seen;
+  std::vector<char> seen(paths_.size(), 0);
   for (std::size_t i = 0; i < specs_.size(); ++i) {
     if (paths[i] >= paths_.size() || !paths_[paths[i]].valid) c.fail(fmt::format("spec {} names path {} of {}", i, paths[i], paths_.size()));
-    if (!seen.insert(paths[i]).second) c.fail(fmt::format("two specs for <{}>", paths_[paths[i]].text));
+    if (seen[paths[i]]++) c.fail(fmt::format("two specs for <{}>", paths_[paths[i]].text));
     if (sets[i] >= field_sets_.size() || (sets[i] > 0 && field_sets_[sets[i] - 1] != kNoField))
       c.fail(fmt::format("spec <{}> names field set {} of {}", paths_[paths[i]].text, sets[i], field_sets_.size()));
     if (types[i] == 0 || types[i] > static_cast<std::uint32_t>(SpecType::VariantSet))

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <new>
 #include <stdexcept>
@@ -35,10 +36,34 @@ usda::ListOp list_op_of(ItemOp op) {
 }
 
 bool is_declaration_keyword(std::string_view word) {
+  if (word.empty() || !std::strchr("rcuvadpo", word[0])) return false;
   for (std::string_view k : {"rel", "custom", "uniform", "config", "varying", "add", "append", "prepend", "delete",
                              "reorder", "def", "over", "class", "variantSet"})
     if (word == k) return true;
   return false;
+}
+
+// The fields the layer's structure is made of (the others are metadata).
+enum class Key : std::uint8_t {
+  Unresolved, Metadata, PrimChildren, Properties, VariantChildren, VariantSetChildren, TargetChildren,
+  ConnectionChildren, Specifier, TypeName, Default, TimeSamples, TargetPaths, ConnectionPaths, Custom, Variability,
+  PrimOrder, PropertyOrder, SubLayerOffsets
+};
+
+Key key_named(std::string_view name) {
+  static constexpr std::pair<std::string_view, Key> kKeys[] = {
+      {"primChildren", Key::PrimChildren},     {"properties", Key::Properties},
+      {"variantChildren", Key::VariantChildren}, {"variantSetChildren", Key::VariantSetChildren},
+      {"targetChildren", Key::TargetChildren}, {"connectionChildren", Key::ConnectionChildren},
+      {"specifier", Key::Specifier},           {"typeName", Key::TypeName},
+      {"default", Key::Default},               {"timeSamples", Key::TimeSamples},
+      {"targetPaths", Key::TargetPaths},       {"connectionPaths", Key::ConnectionPaths},
+      {"custom", Key::Custom},                 {"variability", Key::Variability},
+      {"primOrder", Key::PrimOrder},           {"propertyOrder", Key::PropertyOrder},
+      {"subLayerOffsets", Key::SubLayerOffsets}};
+  for (const auto& [n, k] : kKeys)
+    if (n == name) return k;
+  return Key::Metadata;
 }
 
 class Builder {
@@ -59,7 +84,7 @@ class Builder {
     std::vector<Field> fields;
     if (root) fields = file_.fields_of(file_.specs()[*root]);
     metadata(fields, 1, true, layer.metadata);
-    for (const std::string& name : names(fields, "primChildren")) prim("/" + name, name, 0, layer.prims);
+    for (const std::string_view name : names(fields, Key::PrimChildren)) prim("/" + std::string(name), name, 0, layer.prims);
     auto source = std::make_shared<const SourceFile>(path, std::move(text_), std::move(objects_));
     source_ = source.get();
     read_values(layer);
@@ -73,13 +98,20 @@ class Builder {
     return it->second;
   }
 
-  const Field* field(const std::vector<Field>& fields, std::string_view name) const {
+  // A field's name, compared with the structure's names once per token.
+  Key key_of(const Field& f) {
+    if (f.token >= keys_.size()) keys_.resize(f.token + 1, Key::Unresolved);
+    if (keys_[f.token] == Key::Unresolved) keys_[f.token] = key_named(file_.token(f.token, "FIELDS"));
+    return keys_[f.token];
+  }
+
+  const Field* field(const std::vector<Field>& fields, Key key) {
     for (const Field& f : fields)
-      if (file_.token(f.token, "FIELDS") == name) return &f;
+      if (key_of(f) == key) return &f;
     return nullptr;
   }
 
-  std::vector<std::string> names(const std::vector<Field>& fields, std::string_view key) {
+  std::vector<std::string_view> names(const std::vector<Field>& fields, Key key) {
     const Field* f = field(fields, key);
     if (!f) return {};
     return values_.tokens(f->rep, kWhat);
@@ -93,11 +125,11 @@ class Builder {
     }
   }
 
-  void locate(const std::string& path) {
+  void locate(std::string path) {
     text_ += '\n';
     ++line_;
     line_start_ = text_.size();
-    objects_.push_back({text_.size(), path});
+    objects_.push_back({text_.size(), std::move(path)});
   }
 
   Span mark() {
@@ -142,14 +174,14 @@ class Builder {
   void metadata(const std::vector<Field>& fields, int indent, bool layer,
                 std::vector<usda::Metadata>& out) {
     for (const Field& f : fields) {
+      if (key_of(f) != Key::Metadata) continue;
       const std::string& key = file_.token(f.token, "FIELDS");
-      if (is_structural_field(key)) continue;
       const std::string& what = kWhat;
       try {
         if (key == "subLayers") {
           std::vector<std::pair<double, double>> offsets;
-          if (const Field* o = field(fields, "subLayerOffsets")) offsets = values_.layer_offsets(o->rep, what);
-          const std::vector<std::string> layers = values_.tokens(f.rep, what);
+          if (const Field* o = field(fields, Key::SubLayerOffsets)) offsets = values_.layer_offsets(o->rep, what);
+          const std::vector<std::string_view> layers = values_.tokens(f.rep, what);
           std::string text = "[";
           for (std::size_t i = 0; i < layers.size(); ++i) {
             text += asset_literal(layers[i]);
@@ -193,7 +225,7 @@ class Builder {
         // Arcs are read by the parser's arc grammar, which takes asset and prim paths only.
         const bool arc = key == "references" || key == "payload" || key == "inherits" || key == "specializes";
         std::optional<usda::Value> node;
-        if (!arc) node = value_node(values_, file_, f.rep, what, true, mark_);
+        if (!arc) node = value_node(values_, file_, f.rep, what, true, mark_, numbers_);
         if (node) {
           m.value = std::move(*node);
         } else {
@@ -213,7 +245,7 @@ class Builder {
     }
   }
 
-  void prim(const std::string& path, const std::string& name, int indent, std::vector<usda::Prim>& siblings) {
+  void prim(const std::string& path, std::string_view name, int indent, std::vector<usda::Prim>& siblings) {
     const auto index = find(path);
     if (!index) return;
     const Spec& spec = file_.specs()[*index];
@@ -221,11 +253,11 @@ class Builder {
     const std::vector<Field> fields = file_.fields_of(spec);
     usda::Prim p;
     p.specifier = usda::Specifier::Over;
-    if (const Field* f = field(fields, "specifier")) {
+    if (const Field* f = field(fields, Key::Specifier)) {
       const auto v = values_.enum_value(f->rep, kWhat);
       p.specifier = v == 0 ? usda::Specifier::Def : v == 1 ? usda::Specifier::Over : usda::Specifier::Class;
     }
-    if (const Field* f = field(fields, "typeName")) {
+    if (const Field* f = field(fields, Key::TypeName)) {
       p.type_name = values_.token(f->rep, kWhat);
       if (!valid_name(p.type_name, false)) throw UseText{};
     }
@@ -241,11 +273,11 @@ class Builder {
     siblings.push_back(std::move(p));
   }
 
-  usda::Value name_list(const std::vector<std::string>& names) {
+  usda::Value name_list(const std::vector<std::string_view>& names) {
     usda::Value list;
     list.kind = usda::ValueKind::List;
     list.span = mark();
-    for (const std::string& n : names) {
+    for (const std::string_view n : names) {
       usda::Value item;
       item.kind = usda::ValueKind::String;
       item.text = as_read(n);
@@ -258,35 +290,36 @@ class Builder {
 
   // Properties, children and variant sets of a prim or variant.
   void body(const std::vector<Field>& fields, const std::string& path, int indent, usda::Prim& p) {
-    for (const auto* order : {"primOrder", "propertyOrder"}) {
+    for (const Key order : {Key::PrimOrder, Key::PropertyOrder}) {
       if (const Field* f = field(fields, order)) {
         usda::ReorderStatement r;
         r.span = mark();
-        r.what = std::string_view(order) == "primOrder" ? "nameChildren" : "properties";
+        r.what = order == Key::PrimOrder ? "nameChildren" : "properties";
         r.names = name_list(values_.tokens(f->rep, kWhat));
         p.reorders.push_back(std::move(r));
       }
     }
-    std::vector<std::string> properties = names(fields, "properties");
-    std::stable_sort(properties.begin(), properties.end(),
-                     [](const std::string& a, const std::string& b) { return dictionary_less(a, b); });
+    std::vector<std::string_view> properties = names(fields, Key::Properties);
+    std::stable_sort(properties.begin(), properties.end(), dictionary_less);
     // Attributes and prims are large nodes: moved once each instead of on every regrowth.
     p.attributes.reserve(properties.size());
     p.property_order.reserve(properties.size());
-    for (const std::string& name : properties) property(path, name, indent, p);
+    for (const std::string_view name : properties) property(path, name, indent, p);
     const std::string prefix = path.back() == '}' ? path : path + "/";
-    const std::vector<std::string> children = names(fields, "primChildren");
+    const std::vector<std::string_view> children = names(fields, Key::PrimChildren);
     p.children.reserve(children.size());
-    for (const std::string& name : children) {
-      prim(prefix + name, name, indent, p.children);
+    for (const std::string_view name : children) {
+      prim(prefix + std::string(name), name, indent, p.children);
       locate(path);
     }
-    for (const std::string& set_name : names(fields, "variantSetChildren")) {
+    for (const std::string_view set_view : names(fields, Key::VariantSetChildren)) {
+      const std::string set_name(set_view);
       const auto set_index = find(path + "{" + set_name + "=}");
       if (!set_index) continue;
       std::vector<std::pair<std::string, std::size_t>> variants;
-      for (const std::string& variant : names(file_.fields_of(file_.specs()[*set_index]), "variantChildren"))
-        if (const auto v = find(path + "{" + set_name + "=" + variant + "}")) variants.emplace_back(variant, *v);
+      for (const std::string_view variant : names(file_.fields_of(file_.specs()[*set_index]), Key::VariantChildren))
+        if (const auto v = find(path + "{" + set_name + "=" + std::string(variant) + "}"))
+          variants.emplace_back(variant, *v);
       if (variants.empty()) continue;
       std::sort(variants.begin(), variants.end());
       usda::VariantSet set;
@@ -315,8 +348,10 @@ class Builder {
     }
   }
 
-  void property(const std::string& owner, const std::string& name, int indent, usda::Prim& p) {
-    const std::string path = owner + "." + name;
+  void property(const std::string& owner, std::string_view name, int indent, usda::Prim& p) {
+    std::string path;
+    path.reserve(owner.size() + 1 + name.size());
+    path.append(owner).append(1, '.').append(name);
     const auto index = find(path);
     if (!index) return;
     // Names and types the parser would read otherwise (`a.b` as a field of `a`, a type
@@ -325,10 +360,10 @@ class Builder {
     const Spec& spec = file_.specs()[*index];
     const std::vector<Field> fields = file_.fields_of(spec);
     bool custom = false;
-    if (const Field* f = field(fields, "custom")) custom = values_.boolean(f->rep, kWhat);
+    if (const Field* f = field(fields, Key::Custom)) custom = values_.boolean(f->rep, kWhat);
     std::optional<std::uint32_t> variability;
-    if (const Field* f = field(fields, "variability")) variability = values_.enum_value(f->rep, kWhat);
-    locate(path);
+    if (const Field* f = field(fields, Key::Variability)) variability = values_.enum_value(f->rep, kWhat);
+    locate(std::move(path));
     if (spec.type == SpecType::Relationship) {
       usda::Relationship r;
       r.custom = custom;
@@ -336,7 +371,7 @@ class Builder {
       r.name = name;
       r.span = mark();
       r.name_span = mark();
-      if (const Field* f = field(fields, "targetPaths")) r.targets = path_lists(f->rep);
+      if (const Field* f = field(fields, Key::TargetPaths)) r.targets = path_lists(f->rep);
       metadata(fields, indent + 1, false, r.metadata);
       p.property_order.push_back({true, static_cast<std::uint32_t>(p.relationships.size())});
       p.relationships.push_back(std::move(r));
@@ -344,9 +379,10 @@ class Builder {
     }
     if (spec.type != SpecType::Attribute) throw UseText{};
     std::string type;
-    if (const Field* f = field(fields, "typeName")) type = values_.token(f->rep, kWhat);
+    if (const Field* f = field(fields, Key::TypeName)) type = values_.token(f->rep, kWhat);
     if (!valid_type_name(type) || is_declaration_keyword(type)) throw UseText{};
-    usda::Attribute a;
+    // Built in place: an attribute is a large node.
+    usda::Attribute& a = p.attributes.emplace_back();
     a.custom = custom;
     a.variability = variability == 1u ? usda::Variability::Uniform : usda::Variability::Varying;
     a.is_array = type.ends_with("[]");
@@ -355,11 +391,11 @@ class Builder {
     a.span = mark();
     a.type_span = mark();
     a.name_span = mark();
-    if (const Field* value = field(fields, "default")) {
+    if (const Field* value = field(fields, Key::Default)) {
       const std::string& what = kWhat;
       const std::size_t from = text_.size();
       try {
-        if (auto node = value_node(values_, file_, value->rep, what, false, mark_)) {
+        if (auto node = value_node(values_, file_, value->rep, what, false, mark_, numbers_)) {
           a.default_value = std::move(*node);
         } else {
           values_.append_literal(value->rep, what, indent, text_);
@@ -371,7 +407,7 @@ class Builder {
       }
     }
     metadata(fields, indent + 1, false, a.metadata);
-    if (const Field* samples = field(fields, "timeSamples")) {
+    if (const Field* samples = field(fields, Key::TimeSamples)) {
       try {
         const auto list = values_.time_samples(samples->rep, kWhat, indent + 1);
         usda::TimeSamples ts;
@@ -389,15 +425,17 @@ class Builder {
         // Left out, as the text writer leaves it out.
       }
     }
-    const Field* connections = field(fields, "connectionPaths");
+    const Field* connections = field(fields, Key::ConnectionPaths);
     if (connections) a.connections = path_lists(connections->rep);
     // The text declares the attribute with its default or metadata, or else (a bare
     // declaration) when it has neither samples nor connections, or with those.
-    const bool declared = a.default_value || !a.metadata.empty() || (!field(fields, "timeSamples") && !connections) ||
+    const bool declared = a.default_value || !a.metadata.empty() || (!field(fields, Key::TimeSamples) && !connections) ||
                           a.time_samples || !a.connections.empty();
-    if (!declared) return;
-    p.property_order.push_back({false, static_cast<std::uint32_t>(p.attributes.size())});
-    p.attributes.push_back(std::move(a));
+    if (!declared) {
+      p.attributes.pop_back();
+      return;
+    }
+    p.property_order.push_back({false, static_cast<std::uint32_t>(p.attributes.size() - 1)});
   }
 
   // The declarations of a path list op (`prepend rel x = </a>`), one per list.
@@ -472,6 +510,8 @@ class Builder {
   std::uint32_t line_ = 1;
   std::size_t line_start_ = 0;
   const SourceFile* source_ = nullptr;
+  std::vector<Key> keys_;  // by token index
+  NumberCache numbers_;
   const std::function<Span()> mark_ = [this] { return mark(); };
 };
 

@@ -65,7 +65,8 @@ class Writer {
   std::vector<std::string> names(const std::vector<Field>& fields, std::string_view key, const std::string& path) {
     const Field* f = field(fields, key);
     if (!f) return {};
-    return values_.tokens(f->rep, fmt::format("<{}> {}", path, key));
+    const auto views = values_.tokens(f->rep, fmt::format("<{}> {}", path, key));
+    return {views.begin(), views.end()};
   }
 
   void locate(const std::string& path) { objects_.push_back({out_.size(), path}); }
@@ -82,7 +83,7 @@ class Writer {
         if (key == "subLayers") {
           std::vector<std::pair<double, double>> offsets;
           if (const Field* o = field(fields, "subLayerOffsets")) offsets = values_.layer_offsets(o->rep, what);
-          const std::vector<std::string> layers = values_.tokens(f.rep, what);
+          const std::vector<std::string_view> layers = values_.tokens(f.rep, what);
           std::string text = pad + "subLayers = [\n";
           for (std::size_t i = 0; i < layers.size(); ++i) {
             text += indentation(indent + 1) + asset_literal(layers[i]);

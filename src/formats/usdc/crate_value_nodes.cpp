@@ -10,7 +10,22 @@ namespace {
 
 using Mark = std::function<Span()>;
 
-usda::Value component_node(const CrateFile& file, Num num, const char* p, const std::string& what, const Mark& mark) {
+NumberCache::Read read_as_text(const CrateFile& file, Num num, const char* p, const std::string& what) {
+  std::string text;
+  append_component(text, file, num, p, what);
+  // What the lexer calls a float: a fraction, an exponent, inf or nan.
+  return {usda::parse_number(text), text.find_first_of(".eEin") == std::string::npos};
+}
+
+template <class Bits, class Map>
+NumberCache::Read cached(Map& map, const CrateFile& file, Num num, const char* p, const std::string& what) {
+  const auto [it, added] = map.try_emplace(load<Bits>(p));
+  if (added) it->second = read_as_text(file, num, p, what);
+  return it->second;
+}
+
+usda::Value component_node(const CrateFile& file, Num num, const char* p, const std::string& what, const Mark& mark,
+                           NumberCache& numbers) {
   usda::Value v;
   v.span = mark();
   switch (num) {
@@ -27,18 +42,18 @@ usda::Value component_node(const CrateFile& file, Num num, const char* p, const 
       return v;
     default: break;
   }
-  std::string text;
-  append_component(text, file, num, p, what);
+  const NumberCache::Read read = num == Num::Float    ? cached<std::uint32_t>(numbers.floats, file, num, p, what)
+                                 : num == Num::Double ? cached<std::uint64_t>(numbers.doubles, file, num, p, what)
+                                                      : read_as_text(file, num, p, what);
   v.kind = usda::ValueKind::Number;
-  v.number = usda::parse_number(text);
-  // What the lexer calls a float: a fraction, an exponent, inf or nan.
-  v.is_integer = text.find_first_of(".eEin") == std::string::npos;
+  v.number = read.number;
+  v.is_integer = read.is_integer;
   return v;
 }
 
 usda::Value element_node(const CrateFile& file, const Element& e, const char* p, const std::string& what,
-                         const Mark& mark) {
-  if (e.components == 1) return component_node(file, e.num, p, what, mark);
+                         const Mark& mark, NumberCache& numbers) {
+  if (e.components == 1) return component_node(file, e.num, p, what, mark, numbers);
   const std::size_t size = size_of(e.num);
   // Crate stores a quaternion x, y, z, w; USDA writes w first.
   const auto stored = [&](int i) { return p + static_cast<std::size_t>(e.quat ? (i + 3) % 4 : i) * size; };
@@ -52,13 +67,13 @@ usda::Value element_node(const CrateFile& file, const Element& e, const char* p,
       row.kind = usda::ValueKind::Tuple;
       row.span = mark();
       row.elements.reserve(static_cast<std::size_t>(e.rows));
-      for (int k = 0; k < e.rows; ++k) row.elements.push_back(component_node(file, e.num, stored(r * e.rows + k), what, mark));
+      for (int k = 0; k < e.rows; ++k) row.elements.push_back(component_node(file, e.num, stored(r * e.rows + k), what, mark, numbers));
       row.count = row.elements.size();
       tuple.elements.push_back(std::move(row));
     }
   } else {
     tuple.elements.reserve(static_cast<std::size_t>(e.components));
-    for (int i = 0; i < e.components; ++i) tuple.elements.push_back(component_node(file, e.num, stored(i), what, mark));
+    for (int i = 0; i < e.components; ++i) tuple.elements.push_back(component_node(file, e.num, stored(i), what, mark, numbers));
   }
   tuple.count = tuple.elements.size();
   return tuple;
@@ -66,16 +81,17 @@ usda::Value element_node(const CrateFile& file, const Element& e, const char* p,
 
 }  // namespace
 
-std::string as_read(const std::string& s) {
+std::string as_read(std::string_view s) {
   const bool plain = std::none_of(s.begin(), s.end(), [](char ch) {
     const auto c = static_cast<unsigned char>(ch);
     return c < 0x20 || c == 0x7F || ch == '"' || ch == '\\';
   });
-  return plain ? s : usda::decode_string(quoted(s));
+  return plain ? std::string(s) : usda::decode_string(quoted(s));
 }
 
 std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile& file, ValueRep rep,
-                                      const std::string& what, bool in_metadata, const std::function<Span()>& mark) {
+                                      const std::string& what, bool in_metadata, const std::function<Span()>& mark,
+                                      NumberCache& numbers) {
   if (values.is_list_op(rep)) return std::nullopt;
   const Element* e = element_of(rep.type());
   if (!e) return std::nullopt;
@@ -89,7 +105,7 @@ std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile
     const std::size_t element_bytes = size_of(e->num) * static_cast<std::size_t>(e->components);
     list.elements.reserve(a.count);
     for (std::size_t i = 0; i < a.count; ++i)
-      list.elements.push_back(element_node(file, *e, a.bytes().data() + i * element_bytes, what, mark));
+      list.elements.push_back(element_node(file, *e, a.bytes().data() + i * element_bytes, what, mark, numbers));
     list.count = list.elements.size();
     return list;
   }
@@ -109,7 +125,7 @@ std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile
     v.text = bytes[0] ? "true" : "false";
     return v;
   }
-  return element_node(file, *e, bytes.data(), what, mark);
+  return element_node(file, *e, bytes.data(), what, mark, numbers);
 }
 
 }  // namespace assetlint::usdc

@@ -440,11 +440,12 @@ ListOpValue ValueReader::list_op(ValueRep rep, const std::string& what) {
   return out;
 }
 
-std::vector<std::string> ValueReader::tokens(ValueRep rep, const std::string& what) {
-  std::vector<std::string> out;
+std::vector<std::string_view> ValueReader::tokens(ValueRep rep, const std::string& what) const {
+  std::vector<std::string_view> out;
   if (rep.type() == kTokenVector || rep.type() == kStringVector) {
     Cursor c = at(rep, what);
     const std::size_t n = c.count(c.read<std::uint64_t>(), 4, "names");
+    out.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       const auto index = c.read<std::uint32_t>();
       out.push_back(rep.type() == kTokenVector ? file_.token(index, what.c_str()) : file_.string(index, what.c_str()));

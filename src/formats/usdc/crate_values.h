@@ -56,7 +56,8 @@ class ValueReader {
   // The literal appended to `out` (mesh arrays are megabytes: not copied); returns its type.
   std::string append_literal(ValueRep rep, const std::string& what, int indent, std::string& out);
   ListOpValue list_op(ValueRep rep, const std::string& what);
-  std::vector<std::string> tokens(ValueRep rep, const std::string& what);  // token vector or token[]/string[]
+  // A token vector or string vector, as views of the file's tokens.
+  std::vector<std::string_view> tokens(ValueRep rep, const std::string& what) const;
   std::string token(ValueRep rep, const std::string& what);  // a token value, unquoted
   std::uint32_t enum_value(ValueRep rep, const std::string& what);         // specifier, variability, permission
   bool boolean(ValueRep rep, const std::string& what);
