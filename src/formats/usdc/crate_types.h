@@ -2,6 +2,7 @@
 // Crate's value types as this reader decodes them, and how USDA writes their components:
 // the type numbers, the element table (components, matrix rows, quaternion order) and the
 // number formatting the text writer and the layer reader share.
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -41,13 +42,14 @@ const Element* element_of(unsigned type);  // null for non-element types
 std::size_t size_of(Num n);
 float half_to_float(std::uint16_t h);
 
-// Formats into a buffer on the stack: appending through a back inserter costs a call per
-// character, and mesh arrays hold millions of numbers.
+// Formats into a buffer on the stack, with the format compiled: appending through a back
+// inserter, or a bounded one, costs a call per character, and mesh arrays hold millions of
+// numbers. (The longest number written is 24 characters, -1.7976931348623157e+308.)
 template <class T>
 void append_number(std::string& out, T v) {
   char buffer[48];
-  const auto written = fmt::format_to_n(buffer, sizeof buffer, "{}", v);
-  out.append(buffer, std::min(written.size, sizeof buffer));
+  const char* end = fmt::format_to(buffer, FMT_COMPILE("{}"), v);
+  out.append(buffer, static_cast<std::size_t>(end - buffer));
 }
 
 template <class F>
