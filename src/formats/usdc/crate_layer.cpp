@@ -13,6 +13,7 @@
 #include "formats/usda/literals.h"
 #include "formats/usda/parser.h"
 #include "formats/usdc/crate_file.h"
+#include "formats/usdc/crate_types.h"
 #include "formats/usdc/crate_usda.h"
 #include "formats/usdc/crate_usda_style.h"
 #include "formats/usdc/crate_value_nodes.h"
@@ -41,6 +42,16 @@ bool is_declaration_keyword(std::string_view word) {
                              "reorder", "def", "over", "class", "variantSet"})
     if (word == k) return true;
   return false;
+}
+
+// A namespaced identifier without '.' or '-' (what valid_name accepts and the parser reads
+// as one name), in ASCII.
+bool is_plain_property_name(std::string_view s) {
+  const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (s.empty() || !letter(s[0]) || s.back() == ':') return false;
+  for (char c : s)
+    if (!letter(c) && !(c >= '0' && c <= '9') && c != ':') return false;
+  return true;
 }
 
 // The fields the layer's structure is made of (the others are metadata).
@@ -144,6 +155,30 @@ class Builder {
     v.lazy = true;
     v.span = Span{id_, from, text_.size() - from, line_, 1};
     advance_lines(from);
+    text_ += ' ';
+    return v;
+  }
+
+  // A numeric array value of a numeric array attribute: what the parser keeps lazy when it
+  // has more than kEagerArrayItems items (parse_layer: is_non_numeric_type, eager_array_limit).
+  static bool keeps_lazy(const usda::Attribute& a, ValueRep rep) {
+    if (!a.is_array || !rep.is_array()) return false;
+    for (std::string_view t : {"string", "token", "asset", "pathExpression", "opaque", "dictionary"})
+      if (a.type_name == t) return false;
+    const Element* e = element_of(rep.type());
+    return e && e->num != Num::StringIdx && e->num != Num::TokenIdx && e->num != Num::AssetIdx;
+  }
+
+  // Such an array, longer than kEagerArrayItems (value_node took the shorter ones): its
+  // literal in the source, kept lazy as the parser keeps it (without scanning it again).
+  usda::Value lazy_array(ValueRep rep) {
+    const std::size_t from = text_.size();
+    usda::Value v;
+    v.kind = usda::ValueKind::List;
+    v.count = values_.append_array(rep, kWhat, text_);
+    if (v.count <= kEagerArrayItems) throw UseText{};
+    v.lazy = true;
+    v.span = Span{id_, from, text_.size() - from, line_, static_cast<std::uint32_t>(from - line_start_ + 1)};
     text_ += ' ';
     return v;
   }
@@ -300,7 +335,8 @@ class Builder {
       }
     }
     std::vector<std::string_view> properties = names(fields, Key::Properties);
-    std::stable_sort(properties.begin(), properties.end(), dictionary_less);
+    if (!std::is_sorted(properties.begin(), properties.end(), dictionary_less))
+      std::stable_sort(properties.begin(), properties.end(), dictionary_less);
     // Attributes and prims are large nodes: moved once each instead of on every regrowth.
     p.attributes.reserve(properties.size());
     p.property_order.reserve(properties.size());
@@ -356,7 +392,7 @@ class Builder {
     if (!index) return;
     // Names and types the parser would read otherwise (`a.b` as a field of `a`, a type
     // that is a keyword) are left to it.
-    if (!valid_name(name, true) || name.find_first_of(".-") != std::string::npos) throw UseText{};
+    if (!is_plain_property_name(name)) throw UseText{};
     const Spec& spec = file_.specs()[*index];
     const std::vector<Field> fields = file_.fields_of(spec);
     bool custom = false;
@@ -397,6 +433,8 @@ class Builder {
       try {
         if (auto node = value_node(values_, file_, value->rep, what, false, mark_, numbers_)) {
           a.default_value = std::move(*node);
+        } else if (keeps_lazy(a, value->rep)) {
+          a.default_value = lazy_array(value->rep);
         } else {
           values_.append_literal(value->rep, what, indent, text_);
           a.default_value = placeholder(from);

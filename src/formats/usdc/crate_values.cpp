@@ -336,6 +336,11 @@ ArrayItems ValueReader::array_items(ValueRep rep, const std::string& what) const
 }
 
 std::string ValueReader::array(ValueRep rep, const std::string& what, std::string& out) {
+  append_array(rep, what, out);
+  return std::string(element_of(rep.type())->name) + "[]";
+}
+
+std::size_t ValueReader::append_array(ValueRep rep, const std::string& what, std::string& out) const {
   const ArrayItems a = array_items(rep, what);
   const Element* e = a.element;
   const std::size_t element_bytes = size_of(e->num) * static_cast<std::size_t>(e->components);
@@ -348,7 +353,7 @@ std::string ValueReader::array(ValueRep rep, const std::string& what, std::strin
     append_element(out, file_, *e, a.bytes().data() + i * element_bytes, what);
   }
   out += ']';
-  return std::string(e->name) + "[]";
+  return n;
 }
 
 std::string ValueReader::dictionary(Cursor& c, const std::string& what, int indent) {

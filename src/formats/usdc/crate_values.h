@@ -66,6 +66,8 @@ class ValueReader {
   // The decoded items of an array value, and one element's stored bytes (inlined forms
   // expanded): what the nodes of crate_value_nodes.h are built from.
   ArrayItems array_items(ValueRep rep, const std::string& what) const;
+  // An array value's literal appended to `out`; returns its item count.
+  std::size_t append_array(ValueRep rep, const std::string& what, std::string& out) const;
   std::string element_bytes(ValueRep rep, const Element& element, const std::string& what) const;
   std::vector<std::pair<std::string, Literal>> time_samples(ValueRep rep, const std::string& what, int indent);
 
