@@ -24,9 +24,9 @@ NumberCache::Read cached(Map& map, const CrateFile& file, Num num, const char* p
   return it->second;
 }
 
-usda::Value component_node(const CrateFile& file, Num num, const char* p, const std::string& what, const Mark& mark,
-                           NumberCache& numbers) {
-  usda::Value v;
+// Nodes are filled where they stand (a node is large: moving one costs as much as filling it).
+void component_node(usda::Value& v, const CrateFile& file, Num num, const char* p, const std::string& what,
+                    const Mark& mark, NumberCache& numbers) {
   v.span = mark();
   switch (num) {
     case Num::StringIdx:
@@ -34,12 +34,12 @@ usda::Value component_node(const CrateFile& file, Num num, const char* p, const 
       const auto index = load<std::uint32_t>(p);
       v.kind = usda::ValueKind::String;
       v.text = as_read(num == Num::TokenIdx ? file.token(index, what.c_str()) : file.string(index, what.c_str()));
-      return v;
+      return;
     }
     case Num::AssetIdx:
       v.kind = usda::ValueKind::AssetPath;
       v.text = usda::decode_asset_path(asset_literal(file.string(load<std::uint32_t>(p), what.c_str())));
-      return v;
+      return;
     default: break;
   }
   const NumberCache::Read read = num == Num::Float    ? cached<std::uint32_t>(numbers.floats, file, num, p, what)
@@ -48,35 +48,33 @@ usda::Value component_node(const CrateFile& file, Num num, const char* p, const 
   v.kind = usda::ValueKind::Number;
   v.number = read.number;
   v.is_integer = read.is_integer;
-  return v;
 }
 
-usda::Value element_node(const CrateFile& file, const Element& e, const char* p, const std::string& what,
-                         const Mark& mark, NumberCache& numbers) {
-  if (e.components == 1) return component_node(file, e.num, p, what, mark, numbers);
+void element_node(usda::Value& out, const CrateFile& file, const Element& e, const char* p, const std::string& what,
+                  const Mark& mark, NumberCache& numbers) {
+  if (e.components == 1) return component_node(out, file, e.num, p, what, mark, numbers);
   const std::size_t size = size_of(e.num);
   // Crate stores a quaternion x, y, z, w; USDA writes w first.
   const auto stored = [&](int i) { return p + static_cast<std::size_t>(e.quat ? (i + 3) % 4 : i) * size; };
-  usda::Value tuple;
-  tuple.kind = usda::ValueKind::Tuple;
-  tuple.span = mark();
+  out.kind = usda::ValueKind::Tuple;
+  out.span = mark();
   if (e.rows) {
-    tuple.elements.reserve(static_cast<std::size_t>(e.rows));
+    out.elements.resize(static_cast<std::size_t>(e.rows));
     for (int r = 0; r < e.rows; ++r) {
-      usda::Value row;
+      usda::Value& row = out.elements[static_cast<std::size_t>(r)];
       row.kind = usda::ValueKind::Tuple;
       row.span = mark();
-      row.elements.reserve(static_cast<std::size_t>(e.rows));
-      for (int k = 0; k < e.rows; ++k) row.elements.push_back(component_node(file, e.num, stored(r * e.rows + k), what, mark, numbers));
+      row.elements.resize(static_cast<std::size_t>(e.rows));
+      for (int k = 0; k < e.rows; ++k)
+        component_node(row.elements[static_cast<std::size_t>(k)], file, e.num, stored(r * e.rows + k), what, mark, numbers);
       row.count = row.elements.size();
-      tuple.elements.push_back(std::move(row));
     }
   } else {
-    tuple.elements.reserve(static_cast<std::size_t>(e.components));
-    for (int i = 0; i < e.components; ++i) tuple.elements.push_back(component_node(file, e.num, stored(i), what, mark, numbers));
+    out.elements.resize(static_cast<std::size_t>(e.components));
+    for (int i = 0; i < e.components; ++i)
+      component_node(out.elements[static_cast<std::size_t>(i)], file, e.num, stored(i), what, mark, numbers);
   }
-  tuple.count = tuple.elements.size();
-  return tuple;
+  out.count = out.elements.size();
 }
 
 }  // namespace
@@ -103,9 +101,9 @@ std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile
     list.kind = usda::ValueKind::List;
     list.span = mark();
     const std::size_t element_bytes = size_of(e->num) * static_cast<std::size_t>(e->components);
-    list.elements.reserve(a.count);
+    list.elements.resize(a.count);
     for (std::size_t i = 0; i < a.count; ++i)
-      list.elements.push_back(element_node(file, *e, a.bytes().data() + i * element_bytes, what, mark, numbers));
+      element_node(list.elements[i], file, *e, a.bytes().data() + i * element_bytes, what, mark, numbers);
     list.count = list.elements.size();
     return list;
   }
@@ -125,7 +123,9 @@ std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile
     v.text = bytes[0] ? "true" : "false";
     return v;
   }
-  return element_node(file, *e, bytes.data(), what, mark, numbers);
+  usda::Value v;
+  element_node(v, file, *e, bytes.data(), what, mark, numbers);
+  return v;
 }
 
 }  // namespace assetlint::usdc
