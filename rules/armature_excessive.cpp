@@ -65,6 +65,7 @@ class ArmatureExcessive final : public Rule {
     double value = 0;     // kg·m² (kg), without the armature
     bool lighter = true;  // the guide's lighter link; else everything the joint moves (Mᵢᵢ − armature)
     bool stand_in = false;  // the lighter link standing in for an unknown Mᵢᵢ: a lower bound
+    bool with_followers = false;  // Jᵀ·M·J over the joint and the mimics that follow it
     std::string name() const { return lighter ? "the lighter link" : "what it moves"; }
   };
 
@@ -73,11 +74,16 @@ class ArmatureExcessive final : public Rule {
     Moved moved;
     const bool guide = asset.format != SourceFormat::Mjcf && guide_applies(asset, settings, joint);
     if (!guide) {
-      const physics::ArticulatedInertia diagonal = model.articulation().joint_space_inertia(joint);
+      // A joint whose mimics follow it turns them too (a motor-side gear and the joint a gear
+      // ratio ties to it): what it moves is the mechanism's Jᵀ·M·J, not its own subtree.
+      const bool leads = physics::coupled_joints(asset, joint).size() > 1 && !joint.is_mimic();
+      const physics::ArticulatedInertia diagonal = leads ? physics::mechanism_inertia(model.articulation(), asset, joint)
+                                                         : model.articulation().joint_space_inertia(joint);
       if (diagonal.known && diagonal.value - armature > 0) {
         moved.known = true;
         moved.value = diagonal.value - armature;
         moved.lighter = false;
+        moved.with_followers = leads;
         return moved;
       }
       moved.stand_in = true;
@@ -333,11 +339,14 @@ class ArmatureExcessive final : public Rule {
                                           : "",
                          format_number(std::sqrt(c.ratio), 3));
     }
-    return fmt::format("For {}, everything the joint moves has {} {} about its axis (Mᵢᵢ with every other joint held, "
-                       "without the armature; threshold {}×); armature = G²·I_rotor: this equals a rotor as heavy as "
-                       "that load behind a {}:1 gearbox.",
-                       joint_label(joint), format_number(c.moved.value, 3), c.unit(), format_number(c.factor),
-                       format_number(std::sqrt(c.ratio), 3));
+    return fmt::format("For {}, everything the joint moves has {} {} about its axis ({}, without the armature; "
+                       "threshold {}×); armature = G²·I_rotor: this equals a rotor as heavy as that load behind a {}:1 "
+                       "gearbox.",
+                       joint_label(joint), format_number(c.moved.value, 3), c.unit(),
+                       c.moved.with_followers ? "Jᵀ·M·J with the joints that mimic it moving at their multipliers and "
+                                                "every other joint held"
+                                              : "Mᵢᵢ with every other joint held",
+                       format_number(c.factor), format_number(std::sqrt(c.ratio), 3));
   }
 
   static void drive_effect(const Candidate& c, Diagnostic& d) {

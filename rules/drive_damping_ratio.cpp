@@ -59,7 +59,11 @@ class DriveDampingRatio final : public Rule {
       const double friction = asset.format == SourceFormat::Mjcf && joint.joint_friction ? joint.joint_friction->value : 0.0;
       const double amplitude_lost = 4.0 * friction / driven->stiffness;
       const bool friction_stops_ringing = below && step && friction > 0 && amplitude_lost >= *step;
-      const bool info_only = steadies_stiff_spring || load_left_out || follows_quickly || friction_stops_ringing;
+      // The ratio rests on a tensor inertia-invalid already reports: that finding is the fact to
+      // act on, and the ratio follows once the tensor is real.
+      const bool rests_on_doubt = below && !driven->inertia_doubt.empty();
+      const bool info_only =
+          steadies_stiff_spring || load_left_out || follows_quickly || friction_stops_ringing || rests_on_doubt;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
@@ -69,6 +73,9 @@ class DriveDampingRatio final : public Rule {
                                       short_name(joint), format_number(ratio, 3), format_number(high))
           : friction_stops_ringing
               ? fmt::format("drive of {}: damping ratio {} is below {}, but its frictionloss stops the ringing",
+                            short_name(joint), format_number(ratio, 3), format_number(low))
+          : rests_on_doubt
+              ? fmt::format("drive of {}: damping ratio {} is below {}, on an inertia that is itself in doubt",
                             short_name(joint), format_number(ratio, 3), format_number(low))
           : follows_quickly
               ? fmt::format("drive of {}: damping ratio {} is above {}, but the joint follows its target within {} s",
@@ -125,7 +132,9 @@ class DriveDampingRatio final : public Rule {
         d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
                            describe_gain(drive.damping, critical, damping_unit(joint))));
       if (!driven->inertia_doubt.empty()) {
-        d.note(fmt::format("No fix is offered: {}, so a damping computed from it would be as wrong.", driven->inertia_doubt));
+        d.note(fmt::format("No fix is offered: {}, so a damping computed from it would be as wrong{}.", driven->inertia_doubt,
+                           rests_on_doubt ? "; the ratio is only as right as that tensor (inertia-invalid), hence an info"
+                                          : ""));
       } else if (fix_offered && drive.damping && drive.damping->span.valid()) {
         d.fix = Fix{fmt::format("set damping {} for a damping ratio of 1", describe_gain(drive.damping, critical, damping_unit(joint))),
                     Applicability::Unsafe, {replace_value(*drive.damping, critical, 4)}};

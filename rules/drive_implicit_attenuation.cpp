@@ -34,18 +34,25 @@ class DriveImplicitAttenuation final : public Rule {
       const double share = static_hold_share(row);
       if (share >= threshold) continue;
       const physics::SimulationRate& rate = driven->rate;
-      const Severity severity = driven->verdict_on_articulation() || driven->acceleration() ? Severity::Warning : Severity::Info;
+      const bool capped_anyway = held_at_max_force(*driven, row, settings);
+      const Severity severity = !capped_anyway && (driven->verdict_on_articulation() || driven->acceleration())
+                                    ? Severity::Warning
+                                    : Severity::Info;
       Diagnostic& d = out.report(
           driven->drive->stiffness->span.valid() ? driven->drive->stiffness->span : joint.name.span, severity,
-          fmt::format("drive of {} holds {}% of k·Δ at a hard stop (x = {}, {}{})", short_name(joint),
+          fmt::format("drive of {} holds {}% of k·Δ at a hard stop (x = {}, {}{}){}", short_name(joint),
                       format_number(100.0 * share, 2), format_number(x, 2), rate.step_text(),
-                      driven->verdict_on_articulation() || driven->acceleration() ? "" : ", lighter link"));
+                      driven->verdict_on_articulation() || driven->acceleration() ? "" : ", lighter link",
+                      capped_anyway ? ", still above its max force" : ""));
       d.note(factor_text(*driven, row));
       if (!driven->verdict_on_articulation() && !driven->acceleration())
         d.note("The articulated inertia is unknown, so this rests on the guide's lighter-link estimate, which can sit "
                "far below what the drive row sees (and x with it); author the missing masses to judge it.");
       d.note(fmt::format("Step: {}.", rate.describe()));
       d.note(hold_text(*driven, row, settings));
+      if (capped_anyway)
+        d.note("The attenuated hold is still above the max force, which PhysX clamps the drive to: the joint holds its "
+               "max force at the stop either way, so the attenuation costs nothing there.");
       d.note("Against a compliant load (gravity, an external force) the drive acts with its full k; at a stop a stiffer "
              "drive does not push harder: x·k·Δ saturates toward Δ/(h²·r).");
     }
@@ -56,6 +63,15 @@ class DriveImplicitAttenuation final : public Rule {
   static double static_hold_share(const physics::DriveRow& row) {
     const physics::Hold hold = physics::static_hold(row, 1.0);
     return hold.uncapped / hold.spring;
+  }
+
+  // Whether the attenuated hold at the guide's target step still reaches the max force: the
+  // clamp, not x, then sets what the drive holds at a stop.
+  static bool held_at_max_force(const DrivenJoint& driven, const physics::DriveRow& row, const Settings& settings) {
+    const auto delta = target_delta(*driven.joint, settings);
+    if (!delta) return false;
+    const physics::ForceLimit limit = force_limit_of(*driven.joint);
+    return std::isfinite(limit.max_force) && physics::static_hold(row, *delta, limit).capped;
   }
 
   static std::string factor_text(const DrivenJoint& driven, const physics::DriveRow& row) {

@@ -450,8 +450,12 @@ ArticulatedInertia Articulation::inertia(const Joint& joint) const {
 ArticulatedInertia Articulation::coupled_inertia(const std::vector<std::pair<const Joint*, double>>& rates) const {
   std::unordered_map<const Joint*, double> rate_of;
   for (const auto& [joint, rate] : rates) {
-    ArticulatedInertia own = inertia(*joint);
-    if (!own.known) return own;
+    const auto i = asset_->index_of(*joint);
+    if (!i || *i >= tree_of_joint_.size() || tree_of_joint_[*i] < 0) {
+      ArticulatedInertia none;
+      none.reason = "the joint is not part of the articulation's tree";
+      return none;
+    }
     rate_of[joint] = rate;
   }
   std::vector<Vector6> velocity(bodies_.size(), Vector6::Zero());
@@ -463,12 +467,20 @@ ArticulatedInertia Articulation::coupled_inertia(const std::vector<std::pair<con
         motion_transform(j.child_in_parent) * velocity[static_cast<std::size_t>(j.parent)] + j.motion * rate;
     energy += j.armature * rate * rate;
   }
+  // Only the bodies the motion moves need their mass: one elsewhere in the tree without it
+  // changes nothing here.
+  ArticulatedInertia result;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
-    if (body.world || !body.mass_known) continue;
+    if (body.world || velocity[b].isZero(0.0)) continue;
+    if (body.massless) continue;  // MuJoCo allows one inside a chain: it adds nothing
+    if (!body.mass_known) {
+      result.unknown_links.insert(result.unknown_links.end(), body.unknown_links.begin(), body.unknown_links.end());
+      continue;
+    }
     energy += velocity[b].dot(spatial_inertia(body.mass, body.com, body.inertia) * velocity[b]);
   }
-  ArticulatedInertia result;
+  if (!result.unknown_links.empty()) return result;
   if (!(energy > 0)) {
     result.reason = "the coupled joints move no mass";
     return result;
