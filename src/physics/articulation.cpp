@@ -69,8 +69,8 @@ Articulation::FreeRoot default_free_root(const Asset& asset) {
 
 Articulation::Articulation(const Asset& asset) : Articulation(asset, default_free_root(asset)) {}
 
-Articulation::Articulation(const Asset& asset, FreeRoot free_root) {
-  build(asset, free_root);
+Articulation::Articulation(const Asset& asset, FreeRoot free_root, MissingMass missing) {
+  build(asset, free_root, missing);
   solve();
   solve_joint_space();
 }
@@ -90,7 +90,7 @@ const Body* Articulation::side(const Joint& joint, int which) const {
   return b < 0 ? nullptr : &bodies_[static_cast<std::size_t>(b)];
 }
 
-void Articulation::build(const Asset& asset, FreeRoot free_root) {
+void Articulation::build(const Asset& asset, FreeRoot free_root, MissingMass missing) {
   asset_ = &asset;
   const std::size_t n = asset.links.size();
   // A link's position; the first definition of a repeated name stands for it.
@@ -180,7 +180,8 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
       const auto& in = link.inertial;
       const bool usd = asset.format == SourceFormat::Usda;
       if (!in ? usd || link.mass_from_geoms : (!in->mass_authored || !in->inertia_authored || !in->com_authored || !(in->mass.value >= 0))) {
-        body.unknown_links.push_back(link.name.text);
+        if (missing == MissingMass::Massless) assumed_massless_.push_back(link.name.text);
+        else body.unknown_links.push_back(link.name.text);
         continue;
       }
       if (!in) continue;
@@ -190,6 +191,8 @@ void Articulation::build(const Asset& asset, FreeRoot free_root) {
     if (!body.unknown_links.empty()) continue;
     if (!(mass > 0)) {
       body.massless = mass == 0;
+      // Taken as massless on purpose, the body adds nothing (its joint alone has no inertia).
+      if (missing == MissingMass::Massless && body.massless) continue;
       for (const Link* link : body.links) body.unknown_links.push_back(link->name.text);
       continue;
     }

@@ -56,10 +56,15 @@ class Articulation {
   // How a tree whose root is not welded to the world is based. Isaac's URDF importer fixes
   // the base by default (fixBase); a USD articulation without a joint to the world floats.
   enum class FreeRoot { Fixed, Floating };
+  // What a link without authored mass counts as: unknown (every inertia it takes part in is
+  // unknown), or massless, which makes each articulated inertia a lower bound (adding mass to
+  // any body only raises 1/r) for the links listed in assumed_massless().
+  enum class MissingMass { Unknown, Massless };
   explicit Articulation(const Asset& asset);
-  Articulation(const Asset& asset, FreeRoot free_root);
+  Articulation(const Asset& asset, FreeRoot free_root, MissingMass missing = MissingMass::Unknown);
 
   const std::vector<Body>& bodies() const { return bodies_; }
+  const std::vector<std::string>& assumed_massless() const { return assumed_massless_; }
   const Body* body_of(std::string_view link) const;
   // The body on one side of a joint: [0] parent/body0, [1] child/body1; null for the world
   // when the side names no link.
@@ -95,10 +100,11 @@ class Articulation {
   std::optional<Eigen::Vector3d> sole_rotation_axis(const Link& link) const;
 
  private:
-  void build(const Asset& asset, FreeRoot free_root);
+  void build(const Asset& asset, FreeRoot free_root, MissingMass missing);
   void solve();
 
   std::vector<Body> bodies_;
+  std::vector<std::string> assumed_massless_;  // links without authored mass taken as massless
   std::vector<TreeJoint> tree_;                     // parents before children
   std::vector<int> roots_;                          // body indices, one per tree
   std::vector<bool> floating_;                      // per body: a floating root
