@@ -311,9 +311,12 @@ void CrateFile::read_paths() {
         const std::string& parent = paths_[static_cast<std::size_t>(p.parent)].text;
         const std::string& name = tokens_[static_cast<std::size_t>(token)];
         if (name.empty()) c.fail("a path element is empty");
-        if (element < 0) entry.text = parent + "." + name;
-        else if (name[0] == '{' || name[0] == '[' || parent == "/" || parent.back() == '}') entry.text = parent + name;
-        else entry.text = parent + "/" + name;
+        // Built in place: a file has a path per prim and property.
+        const bool joined = element >= 0 && (name[0] == '{' || name[0] == '[' || parent == "/" || parent.back() == '}');
+        entry.text.reserve(parent.size() + 1 + name.size());
+        entry.text.append(parent);
+        if (!joined) entry.text += element < 0 ? '.' : '/';
+        entry.text.append(name);
         entry.parent = static_cast<std::uint32_t>(p.parent);
       }
       entry.valid = true;

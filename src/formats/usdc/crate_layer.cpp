@@ -46,6 +46,11 @@ bool is_declaration_keyword(std::string_view word) {
 
 // A namespaced identifier without '.' or '-' (what valid_name accepts and the parser reads
 // as one name), in ASCII.
+// Metadata the parser reads with its arc grammar (asset and prim paths only).
+bool is_arc_key(std::string_view key) {
+  return key == "references" || key == "payload" || key == "inherits" || key == "specializes";
+}
+
 bool is_plain_property_name(std::string_view s) {
   const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
   if (s.empty() || !letter(s[0]) || s.back() == ':') return false;
@@ -199,6 +204,28 @@ class Builder {
     return m;
   }
 
+  // `key = "a"` (bare) or `key = ["a", "b"]`, from the items' quoted forms.
+  usda::Metadata name_item(usda::ListOp op, std::string key, const std::vector<std::string>& items, bool bare) {
+    usda::Metadata m = item(op, std::move(key));
+    const auto string = [this](const std::string& quoted_item) {
+      usda::Value v;
+      v.kind = usda::ValueKind::String;
+      v.span = mark();
+      v.text = usda::decode_string(quoted_item);
+      return v;
+    };
+    if (bare) {
+      m.value = string(items[0]);
+      return m;
+    }
+    m.value.kind = usda::ValueKind::List;
+    m.value.span = mark();
+    m.value.elements.reserve(items.size());
+    for (const std::string& i : items) m.value.elements.push_back(string(i));
+    m.value.count = m.value.elements.size();
+    return m;
+  }
+
   usda::Metadata item(usda::ListOp op, std::string key, std::string_view value) {
     usda::Metadata m = item(op, std::move(key));
     m.value = literal(value);
@@ -238,11 +265,17 @@ class Builder {
         if (!valid_name(shown, false)) continue;
         if (values_.is_list_op(f.rep)) {
           const ListOpValue op = values_.list_op(f.rep, what);
+          // Lists of names (apiSchemas, variantSets) are built as nodes; the others, arcs
+          // among them, are read by the parser from their literal.
+          const bool names = !is_arc_key(key) && std::all_of(op.parts.begin(), op.parts.end(), [](const auto& part) {
+            return std::all_of(part.second.begin(), part.second.end(), [](const std::string& i) { return i[0] == '"'; });
+          });
           if (op.is_explicit && op.parts.empty()) out.push_back(item(usda::ListOp::Explicit, shown, "None"));
           for (const auto& [kind, items] : op.parts) {
             if (items.empty() && kind == ItemOp::Explicit) out.push_back(item(usda::ListOp::Explicit, shown, "None"));
-            else if (items.size() == 1 && bare_when_single(key)) out.push_back(item(list_op_of(kind), shown, items[0]));
-            else out.push_back(item(list_op_of(kind), shown, bracketed(items, indent)));
+            else if (!names && items.size() == 1 && bare_when_single(key)) out.push_back(item(list_op_of(kind), shown, items[0]));
+            else if (!names) out.push_back(item(list_op_of(kind), shown, bracketed(items, indent)));
+            else out.push_back(name_item(list_op_of(kind), shown, items, items.size() == 1 && bare_when_single(key)));
           }
           continue;
         }
@@ -257,10 +290,8 @@ class Builder {
           continue;
         }
         usda::Metadata m = item(usda::ListOp::Explicit, shown);
-        // Arcs are read by the parser's arc grammar, which takes asset and prim paths only.
-        const bool arc = key == "references" || key == "payload" || key == "inherits" || key == "specializes";
         std::optional<usda::Value> node;
-        if (!arc) node = value_node(values_, file_, f.rep, what, true, mark_, numbers_);
+        if (!is_arc_key(key)) node = value_node(values_, file_, f.rep, what, true, mark_, numbers_);
         if (node) {
           m.value = std::move(*node);
         } else {
