@@ -174,3 +174,20 @@ TEST_CASE("urdfdom verdict: skipped only where urdfdom accepts, over the corpus 
   // The corpus's own refusals for a missing <limit> (Drake's PR2, the Factory Franka).
   CHECK(originals.rejections_predicted >= 2);
 }
+
+TEST_CASE("urdfdom verdict: a '%' in the document is text, not a console_bridge conversion", "[urdfdom]") {
+  // urdfdom passes "Unable to parse component [x%n] …" to console_bridge as its format string;
+  // read as a conversion, %n writes through a stray pointer and the process aborts.
+  const std::string doc = R"(<robot name="r">
+  <link name="a%s"><visual><origin xyz="x%n%s 0 0"/><geometry><box size="1 1 1"/></geometry></visual></link>
+  <joint name="j" type="fixed%s"><parent link="a%s"/><child link="b"/></joint>
+  <link name="b"/>
+</robot>)";
+  const std::vector<std::string> errors = urdf::urdfdom_errors(doc);
+  CHECK(std::any_of(errors.begin(), errors.end(), [](const std::string& e) { return e.find("[x%n%s]") != std::string::npos; }));
+  CHECK(std::any_of(errors.begin(), errors.end(), [](const std::string& e) { return e.find("[fixed%s]") != std::string::npos; }));
+  compare("percent.urdf", doc);
+  // Names stay distinct: a%b and a%%b are two links, not one repeated.
+  const std::string two = R"(<robot name="r"><link name="a%b"/><link name="a%%b"/><joint name="j" type="fixed"><parent link="a%b"/><child link="a%%b"/></joint></robot>)";
+  CHECK(urdf::urdfdom_errors(two).empty());
+}
