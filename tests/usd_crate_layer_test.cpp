@@ -14,12 +14,13 @@
 #include <vector>
 
 #include "test_support.h"
+#include "support/crate_files.h"
 
 #include "formats/usda/parser.h"
 #include "formats/usdc/crate_layer.h"
 #include "formats/usdc/crate_usda.h"
 
-using assetlint::test::corpus_dir;
+using assetlint::test::crate_files;
 using assetlint::test::fixtures_dir;
 using assetlint::test::read_file;
 
@@ -28,19 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 namespace usda = assetlint::usda;
 namespace usdc = assetlint::usdc;
-
-std::vector<fs::path> crate_layers() {
-  std::vector<fs::path> out;
-  std::vector<fs::path> roots{fixtures_dir() / "usdc"};
-  if (!corpus_dir().empty()) roots.push_back(corpus_dir() / "usdc");
-  for (const auto& root : roots) {
-    if (!fs::exists(root)) continue;
-    for (const auto& e : fs::recursive_directory_iterator(root))
-      if (e.is_regular_file() && usdc::is_crate(read_file(e.path()).substr(0, 8))) out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 // Everything the parser decides about a node, spans aside; lazy lists by their numbers.
 class Dump {
@@ -183,7 +171,7 @@ void check_locations(const assetlint::SourceFile& source, const std::vector<usda
 }  // namespace
 
 TEST_CASE("a crate layer built from its specs is the layer its USDA text parses to", "[usdc]") {
-  const auto files = crate_layers();
+  const auto files = crate_files();
   REQUIRE(files.size() >= 4);
   for (const auto& path : files) {
     INFO(path.string());

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "test_support.h"
+#include "support/crate_files.h"
 #include "support/openusd_oracle.h"
 
 #include "engine/settings.h"
@@ -25,8 +26,7 @@
 #include "formats/usdc/crate_usda.h"
 #include "pipeline/lint.h"
 
-using assetlint::test::corpus_dir;
-using assetlint::test::fixtures_dir;
+using assetlint::test::crate_files;
 using assetlint::test::read_file;
 
 namespace {
@@ -34,22 +34,6 @@ namespace {
 namespace fs = std::filesystem;
 namespace usda = assetlint::usda;
 namespace usdc = assetlint::usdc;
-
-std::vector<fs::path> crate_files() {
-  std::vector<fs::path> out;
-  std::vector<fs::path> roots{fixtures_dir() / "usdc"};
-  if (!corpus_dir().empty()) roots.push_back(corpus_dir() / "usdc");
-  for (const auto& root : roots) {
-    if (!fs::exists(root)) continue;
-    for (const auto& e : fs::recursive_directory_iterator(root)) {
-      if (!e.is_regular_file()) continue;
-      const auto ext = e.path().extension().string();
-      if ((ext == ".usd" || ext == ".usdc") && usdc::is_crate(read_file(e.path()).substr(0, 8))) out.push_back(e.path());
-    }
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 struct Reference {
   nlohmann::json json;
