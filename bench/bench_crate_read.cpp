@@ -2,8 +2,8 @@
 // USDA text. crate: what checking a crate layer costs (usdc::read_crate_layer, the layer
 // built from the crate's specs); via_text: the crate written as the USDA `cat` prints,
 // then parsed; usda: the parse of that same text (what a .usda file of the same content
-// costs).
-//   bench_crate_read [-n N] file.usd...
+// costs). --crate-only times the crate read alone (to profile it with perf).
+//   bench_crate_read [-n N] [--crate-only] file.usd...
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -30,7 +30,7 @@ std::size_t count_prims(const std::vector<usda::Prim>& prims) {
 
 template <class Fn>
 double best_of(int runs, Fn&& fn) {
-  double best = 1e30;
+  double best = runs > 0 ? 1e30 : 0.0;
   for (int r = 0; r < runs; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     fn();
@@ -43,14 +43,16 @@ double best_of(int runs, Fn&& fn) {
 
 int main(int argc, char** argv) {
   int runs = 20;
+  bool crate_only = false;
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "-n" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--crate-only") crate_only = true;
     else paths.push_back(a);
   }
   if (paths.empty()) {
-    std::fprintf(stderr, "usage: bench_crate_read [-n runs] file.usd...\n");
+    std::fprintf(stderr, "usage: bench_crate_read [-n runs] [--crate-only] file.usd...\n");
     return 2;
   }
   std::printf("file\tcrate_bytes\tusda_bytes\tprims\tcrate_ms\tvia_text_ms\tusda_ms\tcrate_us_per_prim\tusda_us_per_prim\n");
@@ -75,12 +77,13 @@ int main(int argc, char** argv) {
       }
       prims = count_prims(read->layer->prims);
     });
-    const double via_text = best_of(runs, [&] {
+    const int other_runs = crate_only ? 0 : runs;
+    const double via_text = best_of(other_runs, [&] {
       auto r = usdc::crate_to_usda(bytes);
       const SourceFile file(path, std::move(std::get<usdc::CrateText>(r).text));
       if (!usda::parse_layer(file, 0).ok()) std::abort();
     });
-    const double usda = best_of(runs, [&] {
+    const double usda = best_of(other_runs, [&] {
       const SourceFile file(path, text);
       auto parsed = usda::parse_layer(file, 0);
       if (!parsed.ok()) std::abort();
