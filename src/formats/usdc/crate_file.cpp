@@ -317,6 +317,8 @@ void CrateFile::read_paths() {
         entry.text.append(parent);
         if (!joined) entry.text += element < 0 ? '.' : '/';
         entry.text.append(name);
+        entry.name = name;
+        entry.property = element < 0;
         entry.parent = static_cast<std::uint32_t>(p.parent);
       }
       entry.valid = true;

@@ -100,7 +100,9 @@ std::vector<std::int64_t> read_compressed_i64(Cursor& c, std::size_t n);
 
 struct PathEntry {
   std::string text;          // "/robot/base.physics:mass", "/robot{physics=PhysX}"
+  std::string_view name;     // the last element ("physics:mass", "{physics=PhysX}"); empty for the root
   std::uint32_t parent = 0;  // path index of the parent (the root is its own parent)
+  bool property = false;     // the last element is a property name
   bool valid = false;
 };
 

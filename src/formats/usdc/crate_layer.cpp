@@ -7,12 +7,12 @@
 #include <functional>
 #include <new>
 #include <stdexcept>
-#include <unordered_map>
 #include <variant>
 
 #include "formats/usda/literals.h"
 #include "formats/usda/parser.h"
 #include "formats/usdc/crate_file.h"
+#include "formats/usdc/crate_spec_index.h"
 #include "formats/usdc/crate_types.h"
 #include "formats/usdc/crate_usda.h"
 #include "formats/usdc/crate_usda_style.h"
@@ -84,9 +84,7 @@ Key key_named(std::string_view name) {
 
 class Builder {
  public:
-  Builder(const CrateFile& file, FileId id) : file_(file), values_(file), id_(id) {
-    for (std::size_t i = 0; i < file.specs().size(); ++i) by_path_.emplace(file.paths()[file.specs()[i].path].text, i);
-  }
+  Builder(const CrateFile& file, const SpecIndex& specs, FileId id) : file_(file), specs_(specs), values_(file), id_(id) {}
 
   CrateLayer run(const std::string& path) {
     usda::Layer layer;
@@ -96,11 +94,12 @@ class Builder {
     text_.reserve(file_.bytes().size() * 4);
     objects_.push_back({0, ""});
     layer.header_span = mark();
-    const auto root = find("/");
+    const auto root = specs_.root();
     std::vector<Field> fields;
-    if (root) fields = file_.fields_of(file_.specs()[*root]);
+    if (root) fields = file_.fields_of(file_.specs()[root->spec]);
     metadata(fields, 1, true, layer.metadata);
-    for (const std::string_view name : names(fields, Key::PrimChildren)) prim("/" + std::string(name), name, 0, layer.prims);
+    if (root)
+      for (const std::string_view name : names(fields, Key::PrimChildren)) prim(root->path, name, 0, layer.prims);
     auto source = std::make_shared<const SourceFile>(path, std::move(text_), std::move(objects_));
     source_ = source.get();
     read_values(layer);
@@ -108,11 +107,14 @@ class Builder {
   }
 
  private:
-  std::optional<std::size_t> find(std::string_view path) const {
-    auto it = by_path_.find(path);
-    if (it == by_path_.end()) return std::nullopt;
-    return it->second;
+  // The spec of child `name` of path `parent`. A name that is not one path element (which
+  // the text finds by the whole path it spells) is left to the text.
+  std::optional<SpecAt> find(std::uint32_t parent, std::string_view name, bool property) const {
+    if (!SpecIndex::is_element(name, property)) throw UseText{};
+    return specs_.child(parent, name, property);
   }
+
+  const std::string& path_text(std::uint32_t path) const { return file_.paths()[path].text; }
 
   // A field's name, compared with the structure's names once per token.
   Key key_of(const Field& f) {
@@ -311,10 +313,10 @@ class Builder {
     }
   }
 
-  void prim(const std::string& path, std::string_view name, int indent, std::vector<usda::Prim>& siblings) {
-    const auto index = find(path);
-    if (!index) return;
-    const Spec& spec = file_.specs()[*index];
+  void prim(std::uint32_t parent, std::string_view name, int indent, std::vector<usda::Prim>& siblings) {
+    const auto at = find(parent, name, false);
+    if (!at) return;
+    const Spec& spec = file_.specs()[at->spec];
     if (spec.type != SpecType::Prim || indent > 120) throw UseText{};
     const std::vector<Field> fields = file_.fields_of(spec);
     usda::Prim p;
@@ -327,7 +329,7 @@ class Builder {
       p.type_name = values_.token(f->rep, kWhat);
       if (!valid_name(p.type_name, false)) throw UseText{};
     }
-    locate(path);
+    locate(path_text(at->path));
     p.span = mark();
     p.specifier_span = p.span;
     if (!p.type_name.empty()) p.type_span = mark();
@@ -335,7 +337,7 @@ class Builder {
     p.name_span = mark();
     metadata(fields, indent + 1, false, p.metadata);
     p.open_brace_span = mark();
-    body(fields, path, indent + 1, p);
+    body(fields, at->path, indent + 1, p);
     siblings.push_back(std::move(p));
   }
 
@@ -355,7 +357,7 @@ class Builder {
   }
 
   // Properties, children and variant sets of a prim or variant.
-  void body(const std::vector<Field>& fields, const std::string& path, int indent, usda::Prim& p) {
+  void body(const std::vector<Field>& fields, std::uint32_t path, int indent, usda::Prim& p) {
     for (const Key order : {Key::PrimOrder, Key::PropertyOrder}) {
       if (const Field* f = field(fields, order)) {
         usda::ReorderStatement r;
@@ -372,31 +374,29 @@ class Builder {
     p.attributes.reserve(properties.size());
     p.property_order.reserve(properties.size());
     for (const std::string_view name : properties) property(path, name, indent, p);
-    const std::string prefix = path.back() == '}' ? path : path + "/";
     const std::vector<std::string_view> children = names(fields, Key::PrimChildren);
     p.children.reserve(children.size());
     for (const std::string_view name : children) {
-      prim(prefix + std::string(name), name, indent, p.children);
-      locate(path);
+      prim(path, name, indent, p.children);
+      locate(path_text(path));
     }
     for (const std::string_view set_view : names(fields, Key::VariantSetChildren)) {
       const std::string set_name(set_view);
-      const auto set_index = find(path + "{" + set_name + "=}");
-      if (!set_index) continue;
-      std::vector<std::pair<std::string, std::size_t>> variants;
-      for (const std::string_view variant : names(file_.fields_of(file_.specs()[*set_index]), Key::VariantChildren))
-        if (const auto v = find(path + "{" + set_name + "=" + std::string(variant) + "}"))
+      const auto set_at = find(path, "{" + set_name + "=}", false);
+      if (!set_at) continue;
+      std::vector<std::pair<std::string, SpecAt>> variants;
+      for (const std::string_view variant : names(file_.fields_of(file_.specs()[set_at->spec]), Key::VariantChildren))
+        if (const auto v = find(path, "{" + set_name + "=" + std::string(variant) + "}", false))
           variants.emplace_back(variant, *v);
       if (variants.empty()) continue;
-      std::sort(variants.begin(), variants.end());
+      std::sort(variants.begin(), variants.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       usda::VariantSet set;
       set.span = mark();
       set.name = as_read(set_name);
       set.name_span = mark();
       for (const auto& [variant, v] : variants) {
-        const std::string variant_path = path + "{" + set_name + "=" + variant + "}";
-        const std::vector<Field> variant_fields = file_.fields_of(file_.specs()[v]);
-        locate(variant_path);
+        const std::vector<Field> variant_fields = file_.fields_of(file_.specs()[v.spec]);
+        locate(path_text(v.path));
         usda::Variant var;
         var.span = mark();
         var.name_span = var.span;
@@ -406,31 +406,28 @@ class Builder {
         var.body.name_span = var.name_span;
         metadata(variant_fields, indent + 2, false, var.body.metadata);
         var.body.open_brace_span = mark();
-        body(variant_fields, variant_path, indent + 2, var.body);
+        body(variant_fields, v.path, indent + 2, var.body);
         var.body.span = var.span;
         set.variants.push_back(std::move(var));
-        locate(path);
+        locate(path_text(path));
       }
       p.variant_sets.push_back(std::move(set));
     }
   }
 
-  void property(const std::string& owner, std::string_view name, int indent, usda::Prim& p) {
-    std::string path;
-    path.reserve(owner.size() + 1 + name.size());
-    path.append(owner).append(1, '.').append(name);
-    const auto index = find(path);
-    if (!index) return;
+  void property(std::uint32_t owner, std::string_view name, int indent, usda::Prim& p) {
+    const auto at = find(owner, name, true);
+    if (!at) return;
     // Names and types the parser would read otherwise (`a.b` as a field of `a`, a type
     // that is a keyword) are left to it.
     if (!is_plain_property_name(name)) throw UseText{};
-    const Spec& spec = file_.specs()[*index];
+    const Spec& spec = file_.specs()[at->spec];
     const std::vector<Field> fields = file_.fields_of(spec);
     bool custom = false;
     if (const Field* f = field(fields, Key::Custom)) custom = values_.boolean(f->rep, kWhat);
     std::optional<std::uint32_t> variability;
     if (const Field* f = field(fields, Key::Variability)) variability = values_.enum_value(f->rep, kWhat);
-    locate(std::move(path));
+    locate(path_text(at->path));
     if (spec.type == SpecType::Relationship) {
       usda::Relationship r;
       r.custom = custom;
@@ -571,9 +568,9 @@ class Builder {
   // path, which reports it with the field it is in: it is never shown from here.
   const std::string kWhat = "crate layer";
   const CrateFile& file_;
+  const SpecIndex& specs_;
   ValueReader values_;
   FileId id_;
-  std::unordered_map<std::string_view, std::size_t> by_path_;
   std::string text_;
   std::vector<ObjectLocation> objects_;
   std::uint32_t line_ = 1;
@@ -590,7 +587,7 @@ std::optional<CrateLayer> read_crate_layer(const std::string& path, std::string_
                                            std::string& error) {
   try {
     const CrateFile file(bytes);
-    return Builder(file, id).run(path);
+    if (const auto specs = SpecIndex::build(file)) return Builder(file, *specs, id).run(path);
   } catch (const CrateError&) {
   } catch (const UnsupportedValue&) {
   } catch (const UseText&) {
