@@ -318,6 +318,7 @@ void CrateFile::read_paths() {
         if (!joined) entry.text += element < 0 ? '.' : '/';
         entry.text.append(name);
         entry.name = name;
+        entry.token = static_cast<std::uint32_t>(token);
         entry.property = element < 0;
         entry.parent = static_cast<std::uint32_t>(p.parent);
       }
@@ -370,6 +371,13 @@ const PathEntry& CrateFile::path(std::uint32_t index, const char* what) const {
   // An index outside the tree is the empty path (a reference without a prim path).
   if (index >= paths_.size()) usdc::fail(what, fmt::format("path index {} of {}", index, paths_.size()));
   return paths_[index];
+}
+
+std::span<const std::uint32_t> CrateFile::field_set(const Spec& spec) const {
+  // read_specs checked that the set starts inside the table and read_field_sets that the table ends terminated.
+  std::size_t end = spec.field_set;
+  while (end < field_sets_.size() && field_sets_[end] != kNoField) ++end;
+  return std::span<const std::uint32_t>(field_sets_).subspan(spec.field_set, end - spec.field_set);
 }
 
 std::vector<Field> CrateFile::fields_of(const Spec& spec) const {

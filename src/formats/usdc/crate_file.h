@@ -7,6 +7,7 @@
 // it is used; a file that breaks the format throws CrateError naming the section.
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -102,6 +103,7 @@ struct PathEntry {
   std::string text;          // "/robot/base.physics:mass", "/robot{physics=PhysX}"
   std::string_view name;     // the last element ("physics:mass", "{physics=PhysX}"); empty for the root
   std::uint32_t parent = 0;  // path index of the parent (the root is its own parent)
+  std::uint32_t token = 0;   // the token `name` is
   bool property = false;     // the last element is a property name
   bool valid = false;
 };
@@ -121,6 +123,9 @@ class CrateFile {
   const std::vector<PathEntry>& paths() const { return paths_; }
   // The fields of a spec, in file order.
   std::vector<Field> fields_of(const Spec& spec) const;
+  // The same as indexes into field(): no copy.
+  std::span<const std::uint32_t> field_set(const Spec& spec) const;
+  const Field& field(std::uint32_t index) const { return fields_[index]; }
 
  private:
   struct Section {

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <functional>
 #include <new>
+#include <span>
 #include <stdexcept>
 #include <variant>
 
@@ -63,7 +65,7 @@ bool is_plain_property_name(std::string_view s) {
 enum class Key : std::uint8_t {
   Unresolved, Metadata, PrimChildren, Properties, VariantChildren, VariantSetChildren, TargetChildren,
   ConnectionChildren, Specifier, TypeName, Default, TimeSamples, TargetPaths, ConnectionPaths, Custom, Variability,
-  PrimOrder, PropertyOrder, SubLayerOffsets
+  PrimOrder, PropertyOrder, SubLayerOffsets, Count
 };
 
 Key key_named(std::string_view name) {
@@ -95,8 +97,8 @@ class Builder {
     objects_.push_back({0, ""});
     layer.header_span = mark();
     const auto root = specs_.root();
-    std::vector<Field> fields;
-    if (root) fields = file_.fields_of(file_.specs()[root->spec]);
+    SpecFields fields;
+    if (root) fields = fields_of(file_.specs()[root->spec]);
     metadata(fields, 1, true, layer.metadata);
     if (root)
       for (const std::string_view name : names(fields, Key::PrimChildren)) prim(root->path, name, 0, layer.prims);
@@ -123,14 +125,26 @@ class Builder {
     return keys_[f.token];
   }
 
-  const Field* field(const std::vector<Field>& fields, Key key) {
-    for (const Field& f : fields)
-      if (key_of(f) == key) return &f;
-    return nullptr;
+  // A spec's fields: the structure's by key (the first of each), and all in file order.
+  struct SpecFields {
+    std::array<const Field*, static_cast<std::size_t>(Key::Count)> by_key{};
+    std::span<const std::uint32_t> all;
+    const Field* operator[](Key key) const { return by_key[static_cast<std::size_t>(key)]; }
+  };
+
+  SpecFields fields_of(const Spec& spec) {
+    SpecFields out;
+    out.all = file_.field_set(spec);
+    for (const std::uint32_t i : out.all) {
+      const Field& f = file_.field(i);
+      const Field*& slot = out.by_key[static_cast<std::size_t>(key_of(f))];
+      if (!slot) slot = &f;
+    }
+    return out;
   }
 
-  std::vector<std::string_view> names(const std::vector<Field>& fields, Key key) {
-    const Field* f = field(fields, key);
+  std::vector<std::string_view> names(const SpecFields& fields, Key key) {
+    const Field* f = fields[key];
     if (!f) return {};
     return values_.tokens(f->rep, kWhat);
   }
@@ -235,16 +249,16 @@ class Builder {
   }
 
   // --- structure, in the order of the text writer -----------------------------------------
-  void metadata(const std::vector<Field>& fields, int indent, bool layer,
-                std::vector<usda::Metadata>& out) {
-    for (const Field& f : fields) {
+  void metadata(const SpecFields& fields, int indent, bool layer, std::vector<usda::Metadata>& out) {
+    for (const std::uint32_t index : fields.all) {
+      const Field& f = file_.field(index);
       if (key_of(f) != Key::Metadata) continue;
       const std::string& key = file_.token(f.token, "FIELDS");
       const std::string& what = kWhat;
       try {
         if (key == "subLayers") {
           std::vector<std::pair<double, double>> offsets;
-          if (const Field* o = field(fields, Key::SubLayerOffsets)) offsets = values_.layer_offsets(o->rep, what);
+          if (const Field* o = fields[Key::SubLayerOffsets]) offsets = values_.layer_offsets(o->rep, what);
           const std::vector<std::string_view> layers = values_.tokens(f.rep, what);
           std::string text = "[";
           for (std::size_t i = 0; i < layers.size(); ++i) {
@@ -318,14 +332,14 @@ class Builder {
     if (!at) return;
     const Spec& spec = file_.specs()[at->spec];
     if (spec.type != SpecType::Prim || indent > 120) throw UseText{};
-    const std::vector<Field> fields = file_.fields_of(spec);
+    const SpecFields fields = fields_of(spec);
     usda::Prim p;
     p.specifier = usda::Specifier::Over;
-    if (const Field* f = field(fields, Key::Specifier)) {
+    if (const Field* f = fields[Key::Specifier]) {
       const auto v = values_.enum_value(f->rep, kWhat);
       p.specifier = v == 0 ? usda::Specifier::Def : v == 1 ? usda::Specifier::Over : usda::Specifier::Class;
     }
-    if (const Field* f = field(fields, Key::TypeName)) {
+    if (const Field* f = fields[Key::TypeName]) {
       p.type_name = values_.token(f->rep, kWhat);
       if (!valid_name(p.type_name, false)) throw UseText{};
     }
@@ -357,9 +371,9 @@ class Builder {
   }
 
   // Properties, children and variant sets of a prim or variant.
-  void body(const std::vector<Field>& fields, std::uint32_t path, int indent, usda::Prim& p) {
+  void body(const SpecFields& fields, std::uint32_t path, int indent, usda::Prim& p) {
     for (const Key order : {Key::PrimOrder, Key::PropertyOrder}) {
-      if (const Field* f = field(fields, order)) {
+      if (const Field* f = fields[order]) {
         usda::ReorderStatement r;
         r.span = mark();
         r.what = order == Key::PrimOrder ? "nameChildren" : "properties";
@@ -385,7 +399,7 @@ class Builder {
       const auto set_at = find(path, "{" + set_name + "=}", false);
       if (!set_at) continue;
       std::vector<std::pair<std::string, SpecAt>> variants;
-      for (const std::string_view variant : names(file_.fields_of(file_.specs()[set_at->spec]), Key::VariantChildren))
+      for (const std::string_view variant : names(fields_of(file_.specs()[set_at->spec]), Key::VariantChildren))
         if (const auto v = find(path, "{" + set_name + "=" + std::string(variant) + "}", false))
           variants.emplace_back(variant, *v);
       if (variants.empty()) continue;
@@ -395,7 +409,7 @@ class Builder {
       set.name = as_read(set_name);
       set.name_span = mark();
       for (const auto& [variant, v] : variants) {
-        const std::vector<Field> variant_fields = file_.fields_of(file_.specs()[v.spec]);
+        const SpecFields variant_fields = fields_of(file_.specs()[v.spec]);
         locate(path_text(v.path));
         usda::Variant var;
         var.span = mark();
@@ -422,11 +436,11 @@ class Builder {
     // that is a keyword) are left to it.
     if (!is_plain_property_name(name)) throw UseText{};
     const Spec& spec = file_.specs()[at->spec];
-    const std::vector<Field> fields = file_.fields_of(spec);
+    const SpecFields fields = fields_of(spec);
     bool custom = false;
-    if (const Field* f = field(fields, Key::Custom)) custom = values_.boolean(f->rep, kWhat);
+    if (const Field* f = fields[Key::Custom]) custom = values_.boolean(f->rep, kWhat);
     std::optional<std::uint32_t> variability;
-    if (const Field* f = field(fields, Key::Variability)) variability = values_.enum_value(f->rep, kWhat);
+    if (const Field* f = fields[Key::Variability]) variability = values_.enum_value(f->rep, kWhat);
     locate(path_text(at->path));
     if (spec.type == SpecType::Relationship) {
       usda::Relationship r;
@@ -435,7 +449,7 @@ class Builder {
       r.name = name;
       r.span = mark();
       r.name_span = mark();
-      if (const Field* f = field(fields, Key::TargetPaths)) r.targets = path_lists(f->rep);
+      if (const Field* f = fields[Key::TargetPaths]) r.targets = path_lists(f->rep);
       metadata(fields, indent + 1, false, r.metadata);
       p.property_order.push_back({true, static_cast<std::uint32_t>(p.relationships.size())});
       p.relationships.push_back(std::move(r));
@@ -443,7 +457,7 @@ class Builder {
     }
     if (spec.type != SpecType::Attribute) throw UseText{};
     std::string type;
-    if (const Field* f = field(fields, Key::TypeName)) type = values_.token(f->rep, kWhat);
+    if (const Field* f = fields[Key::TypeName]) type = values_.token(f->rep, kWhat);
     if (!valid_type_name(type) || is_declaration_keyword(type)) throw UseText{};
     // Built in place: an attribute is a large node.
     usda::Attribute& a = p.attributes.emplace_back();
@@ -455,7 +469,7 @@ class Builder {
     a.span = mark();
     a.type_span = mark();
     a.name_span = mark();
-    if (const Field* value = field(fields, Key::Default)) {
+    if (const Field* value = fields[Key::Default]) {
       const std::string& what = kWhat;
       const std::size_t from = text_.size();
       try {
@@ -473,7 +487,7 @@ class Builder {
       }
     }
     metadata(fields, indent + 1, false, a.metadata);
-    if (const Field* samples = field(fields, Key::TimeSamples)) {
+    if (const Field* samples = fields[Key::TimeSamples]) {
       try {
         const auto list = values_.time_samples(samples->rep, kWhat, indent + 1);
         usda::TimeSamples ts;
@@ -491,11 +505,11 @@ class Builder {
         // Left out, as the text writer leaves it out.
       }
     }
-    const Field* connections = field(fields, Key::ConnectionPaths);
+    const Field* connections = fields[Key::ConnectionPaths];
     if (connections) a.connections = path_lists(connections->rep);
     // The text declares the attribute with its default or metadata, or else (a bare
     // declaration) when it has neither samples nor connections, or with those.
-    const bool declared = a.default_value || !a.metadata.empty() || (!field(fields, Key::TimeSamples) && !connections) ||
+    const bool declared = a.default_value || !a.metadata.empty() || (!fields[Key::TimeSamples] && !connections) ||
                           a.time_samples || !a.connections.empty();
     if (!declared) {
       p.attributes.pop_back();

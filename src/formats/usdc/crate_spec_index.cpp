@@ -36,17 +36,22 @@ bool SpecIndex::is_element(std::string_view name, bool property) {
   return s == Spelling::Plain || (!property && s == Spelling::Variant);
 }
 
-std::uint64_t SpecIndex::hash(std::uint32_t parent, std::string_view name, bool property) {
-  // FNV-1a over the name, mixed with the parent: names are short.
-  std::uint64_t h = 0xcbf29ce484222325ull ^ (std::uint64_t{parent} << 1 | (property ? 1u : 0u));
+std::uint64_t SpecIndex::name_hash(std::string_view name) {
+  // FNV-1a: names are short.
+  std::uint64_t h = 0xcbf29ce484222325ull;
   for (const char c : name) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
-  return h ^ (h >> 29);
+  return h;
 }
 
-bool SpecIndex::insert(const CrateFile& file, std::uint32_t path) {
+std::size_t SpecIndex::slot(std::uint64_t name_hash, std::uint32_t parent, bool property) const {
+  std::uint64_t h = (name_hash ^ (std::uint64_t{parent} << 1 | (property ? 1u : 0u))) * 0x9E3779B97F4A7C15ull;
+  return static_cast<std::size_t>(h >> 32) & (slots_.size() - 1);
+}
+
+bool SpecIndex::insert(const CrateFile& file, std::uint32_t path, std::uint64_t name_hash) {
   const PathEntry& e = file.paths()[path];
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = hash(e.parent, e.name, e.property) & mask;; i = (i + 1) & mask) {
+  for (std::size_t i = slot(name_hash, e.parent, e.property);; i = (i + 1) & mask) {
     Slot& s = slots_[i];
     if (s.path == kEmpty) {
       s = {path, e.parent};
@@ -67,6 +72,13 @@ std::optional<SpecIndex> SpecIndex::build(const CrateFile& file) {
   // Whether each path is spelled with brackets (its name or an ancestor's): 0 not yet known.
   std::vector<char> bracketed(paths.size(), 0);
   std::vector<std::uint32_t> chain;
+  // A property name recurs on every prim that has it: spelled and hashed once per token.
+  struct TokenFacts {
+    bool known = false;
+    Spelling spelling = Spelling::Other;
+    std::uint64_t hash = 0;
+  };
+  std::vector<TokenFacts> tokens;
   for (std::uint32_t i = 0; i < paths.size(); ++i) {
     const PathEntry& e = paths[i];
     if (!e.valid) continue;
@@ -88,12 +100,15 @@ std::optional<SpecIndex> SpecIndex::build(const CrateFile& file) {
     bool under = bracketed[p] == 1;
     for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
       const PathEntry& e = paths[*it];
-      const Spelling s = spelling(e.name);
+      if (e.token >= tokens.size()) tokens.resize(e.token + 1);
+      TokenFacts& t = tokens[e.token];
+      if (!t.known) t = {true, spelling(e.name), name_hash(e.name)};
+      const Spelling s = t.spelling;
       under = under || s == Spelling::Bracketed;
       bracketed[*it] = under ? 1 : 2;
       if (under) continue;
       if (s == Spelling::Other || (e.property && s != Spelling::Plain)) return std::nullopt;
-      if (!index.insert(file, *it)) return std::nullopt;  // two children spelled alike
+      if (!index.insert(file, *it, t.hash)) return std::nullopt;  // two children spelled alike
     }
   }
   index.spec_of_path_.assign(paths.size(), kEmpty);
@@ -108,7 +123,7 @@ std::optional<SpecAt> SpecIndex::at(std::uint32_t path) const {
 
 std::optional<SpecAt> SpecIndex::child(std::uint32_t parent, std::string_view name, bool property) const {
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = hash(parent, name, property) & mask;; i = (i + 1) & mask) {
+  for (std::size_t i = slot(name_hash(name), parent, property);; i = (i + 1) & mask) {
     const Slot& s = slots_[i];
     if (s.path == kEmpty) return std::nullopt;
     const PathEntry& e = file_->paths()[s.path];

@@ -42,8 +42,9 @@ class SpecIndex {
     std::uint32_t parent = 0;
   };
   static constexpr std::uint32_t kEmpty = 0xFFFFFFFF;
-  static std::uint64_t hash(std::uint32_t parent, std::string_view name, bool property);
-  bool insert(const CrateFile& file, std::uint32_t path);
+  static std::uint64_t name_hash(std::string_view name);
+  std::size_t slot(std::uint64_t name_hash, std::uint32_t parent, bool property) const;
+  bool insert(const CrateFile& file, std::uint32_t path, std::uint64_t name_hash);
   std::optional<SpecAt> at(std::uint32_t path) const;
 
   const CrateFile* file_ = nullptr;

@@ -1,5 +1,6 @@
 #include "formats/usdc/crate_usda_style.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace assetlint::usdc {
@@ -33,8 +34,13 @@ bool bare_when_single(std::string_view key) {
 }
 
 bool dictionary_less(std::string_view a, std::string_view b) {
-  std::size_t i = 0, j = 0;
   const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  // Property names share long prefixes ("physics:", "drive:angular:physics:"): equal bytes
+  // compare equal, so the comparison starts where they differ, or at the start of the
+  // digit run there (compared by value).
+  std::size_t i = static_cast<std::size_t>(std::mismatch(a.begin(), a.begin() + std::min(a.size(), b.size()), b.begin()).first - a.begin());
+  while (i > 0 && digit(a[i - 1])) --i;
+  std::size_t j = i;
   while (i < a.size() && j < b.size()) {
     const auto l = static_cast<unsigned char>(a[i]), r = static_cast<unsigned char>(b[j]);
     if (digit(a[i]) && digit(b[j])) {
