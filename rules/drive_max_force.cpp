@@ -108,11 +108,7 @@ class DriveMaxForce final : public Rule {
   void judge(const Context& c, const Quantity& q) const {
     const double placeholder = rule_option(info_, c.settings, "placeholder_force");
     if (q.value <= 0 && !c.usd && q.span.valid()) return sentinel(c, q);
-    if (q.value == 0) {
-      Diagnostic& d = c.out.report(q.span, fmt::format("{} has maxForce 0: the drive cannot move it", c.label()));
-      d.note("PhysX clamps the drive force to maxForce; 0 leaves the joint limp.");
-      return;
-    }
+    if (q.value == 0) return zero_bound(c, q);
     if (q.value < 0) {
       c.out.report(q.span, fmt::format("{} has negative {} {}", c.label(), c.what(), describe(q)));
       return;
@@ -146,6 +142,46 @@ class DriveMaxForce final : public Rule {
     }
     d.note("Without a [gripper] spec in asset-lint.toml this is an info. With one, the bound is judged against the "
            "force the payload needs (a placeholder far above it makes the simulated gripper hold what the real one drops).");
+  }
+
+  // A USD drive whose maxForce is 0 exerts nothing: PhysX clamps the drive force to it. Where
+  // other drives of the asset author positive bounds, a zero on a joint no spec and no mimic
+  // relies on reads as a joint left passive on purpose (a rover's rocker-bogie); where every
+  // drive is zero, or the joint drives a gripper, the robot cannot move what it must.
+  static void zero_bound(const Context& c, const Quantity& q) {
+    const DriveBounds bounds = drive_bounds(c.asset);
+    const bool deliberate = bounds.positive > 0 && !c.required && !c.gripper_driver();
+    Diagnostic& d = c.out.report(q.span, deliberate ? Severity::Info : Severity::Warning,
+                                 fmt::format("{} has maxForce 0: the drive cannot move it", c.label()));
+    d.note("PhysX sets up no drive on a joint whose maxForce is 0: the joint is passive, moved only by gravity, contact "
+           "and its links, whatever the drive's stiffness and damping.");
+    if (deliberate) {
+      d.note(fmt::format("{} other drive{} of the asset author{} a positive maxForce, so a zero here reads as a joint "
+                         "meant to stay passive (a suspension, a free bogie). If it is, removing the drive says so; if "
+                         "not, author the motor's rated torque (N·m) or force (N).",
+                         bounds.positive, bounds.positive == 1 ? "" : "s", bounds.positive == 1 ? "s" : ""));
+    } else if (bounds.positive == 0 && bounds.zero > 1) {
+      d.note(fmt::format("None of the asset's {} drives authors a positive maxForce: the robot cannot move at all.",
+                         bounds.zero));
+    } else if (c.gripper_driver()) {
+      d.note("It is the joint the gripper's mimic joints follow: the gripper cannot close.");
+    }
+    if (c.required) spec_notes(c, d);
+  }
+
+  struct DriveBounds {
+    std::size_t zero = 0, positive = 0;
+  };
+
+  static DriveBounds drive_bounds(const Asset& asset) {
+    DriveBounds b;
+    for (const Joint& joint : asset.joints) {
+      if (!joint.drive || !has_active_drive(joint) || !joint.drive->max_force || joint.is_mimic()) continue;
+      const double f = joint.drive->max_force->value;
+      if (f == 0) ++b.zero;
+      else if (f > 0) ++b.positive;
+    }
+    return b;
   }
 
   // URDF <dynamics friction> is a Coulomb torque (force) opposing motion: an effort no larger
