@@ -66,6 +66,7 @@ class ArmatureExcessive final : public Rule {
     bool lighter = true;  // the guide's lighter link; else everything the joint moves (Mᵢᵢ − armature)
     bool stand_in = false;  // the lighter link standing in for an unknown Mᵢᵢ: a lower bound
     bool with_followers = false;  // Jᵀ·M·J over the joint and the mimics that follow it
+    bool partial = false;  // what a loop, coupling tendon or rope adds is left out (Joint::hidden_load)
     std::string name() const { return lighter ? "the lighter link" : "what it moves"; }
   };
 
@@ -84,6 +85,7 @@ class ArmatureExcessive final : public Rule {
         moved.value = diagonal.value - armature;
         moved.lighter = false;
         moved.with_followers = leads;
+        moved.partial = static_cast<bool>(joint.hidden_load);
         return moved;
       }
       moved.stand_in = true;
@@ -107,7 +109,8 @@ class ArmatureExcessive final : public Rule {
     const Joint* shared = nullptr;  // a steady drive with the same armature literal
     const char* unit() const { return is_angular(joint.type) ? "kg·m²" : "kg"; }
     // Far above everything the joint moves: the drive turns a flywheel.
-    bool dwarfs() const { return !moved.lighter && ratio > flywheel; }
+    // Not when part of the load is left out: the ratio then overstates the armature's share.
+    bool dwarfs() const { return !moved.lighter && !moved.partial && ratio > flywheel; }
   };
 
   struct Crutch {
@@ -198,7 +201,8 @@ class ArmatureExcessive final : public Rule {
       drive_effect(c, d);
       return;
     }
-    if (const auto without = crutch(c)) {
+    const std::optional<Crutch> without = c.moved.partial ? std::nullopt : crutch(c);
+    if (without) {
       const physics::SimulationRate& rate = c.driven->rate;
       Diagnostic& d = out.report(at, c.shared ? Severity::Info : Severity::Warning,
                                  fmt::format("armature {} of {} ({}× {}) is what keeps its drive {}", amount,
@@ -272,11 +276,16 @@ class ArmatureExcessive final : public Rule {
                                            times, c.moved.lighter ? "the lighter link's inertia" : "what the joint moves",
                                            format_number(c.factor)));
     d.note(moved_text(c));
-    d.note(c.driven ? "Its drive would be steady without it (within the natural-frequency bound, or damped by MuJoCo's "
-                      "integrator), so it models a motor rather than steadying the drive; declare the motor to record "
-                      "that."
-                    : "No spring drive depends on it, so it models a motor rather than steadying a drive; declare the "
-                      "motor to record that.");
+    if (c.moved.partial && crutch(c))
+      d.note("On Mᵢᵢ alone its drive would be past the step's bound without it, but what the joint also turns adds "
+             "inertia the file does not give: whether the drive needs the armature is not judged. Declare the motor to "
+             "record what the armature models.");
+    else
+      d.note(c.driven ? "Its drive would be steady without it (within the natural-frequency bound, or damped by MuJoCo's "
+                        "integrator), so it models a motor rather than steadying the drive; declare the motor to record "
+                        "that."
+                      : "No spring drive depends on it, so it models a motor rather than steadying a drive; declare the "
+                        "motor to record that.");
     if (c.driven && c.driven->rate.solver == physics::Solver::MuJoCo && !c.driven->damping_known())
       d.note(fmt::format("Whether the drive needs it to stay stable was not judged: {}.", c.driven->drive->damping_unknown));
     drive_effect(c, d);
@@ -339,14 +348,17 @@ class ArmatureExcessive final : public Rule {
                                           : "",
                          format_number(std::sqrt(c.ratio), 3));
     }
-    return fmt::format("For {}, everything the joint moves has {} {} about its axis ({}, without the armature; "
-                       "threshold {}×); armature = G²·I_rotor: this equals a rotor as heavy as that load behind a {}:1 "
-                       "gearbox.",
-                       joint_label(joint), format_number(c.moved.value, 3), c.unit(),
-                       c.moved.with_followers ? "Jᵀ·M·J with the joints that mimic it moving at their multipliers and "
-                                                "every other joint held"
-                                              : "Mᵢᵢ with every other joint held",
-                       format_number(c.factor), format_number(std::sqrt(c.ratio), 3));
+    std::string text = fmt::format(
+        "For {}, everything the joint moves has {} {} about its axis ({}, without the armature; threshold {}×); "
+        "armature = G²·I_rotor: this equals a rotor as heavy as that load behind a {}:1 gearbox.",
+        joint_label(joint), format_number(c.moved.value, 3), c.unit(),
+        c.moved.with_followers ? "Jᵀ·M·J with the joints that mimic it moving at their multipliers and every other joint held"
+                               : "Mᵢᵢ with every other joint held",
+        format_number(c.factor), format_number(std::sqrt(c.ratio), 3));
+    if (c.moved.partial)
+      text += fmt::format(" That leaves out part of its load ({}), so the ratio overstates the armature's share{}.",
+                          joint.hidden_load->what, c.ratio > c.flywheel ? " and is not judged as a flywheel" : "");
+    return text;
   }
 
   static void drive_effect(const Candidate& c, Diagnostic& d) {

@@ -39,8 +39,8 @@ class DriveDampingRatio final : public Rule {
           !below && !driven->acceleration() && rate.solver == physics::Solver::MuJoCo &&
           rate.h() * physics::natural_frequency(driven->stiffness, inertia) > 1 &&
           physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*driven, inertia)) == physics::StepVerdict::Decays;
-      // A load the inertia leaves out only lowers the true ratio: "too high" is then unproven.
-      const bool load_left_out = !below && !drive.load_beyond_inertia.empty();
+      // A load the inertia leaves out lowers the true ratio: "too high" is then unproven.
+      const bool load_left_out = !below && joint.hidden_load;
       // Far above critical the drive is a first-order lag: "sluggish" is a claim about how long
       // the joint takes to follow, and a short time constant refutes it.
       const double time_constant =
@@ -115,9 +115,16 @@ class DriveDampingRatio final : public Rule {
                                      "(solreffriction) lets it creep",
                                      format_number(friction / driven->stiffness, 3))));
       if (load_left_out)
-        d.note(drive.load_span, fmt::format("The drive's inertia is a lower bound: {}. The ratio with the load hanging "
-                                            "is lower, by how much the file cannot tell; no fix is offered.",
-                                            drive.load_beyond_inertia));
+        d.note(joint.hidden_load->span,
+               joint.hidden_load->rope
+                   ? fmt::format("The drive's inertia is a lower bound: {}, which its M₀ᵢᵢ leaves out. The ratio with "
+                                 "the load hanging is lower, "
+                                 "by how much the file cannot tell; no fix is offered.",
+                                 joint.hidden_load->what)
+                   : fmt::format("The drive's inertia is incomplete: {}, which its M₀ᵢᵢ (every other joint held) "
+                                 "leaves out. The ratio with the joints it turns is "
+                                 "usually lower, by how much the loop's geometry decides; no fix is offered.",
+                                 joint.hidden_load->what));
       if (steadies_stiff_spring) {
         const physics::Servo servo = mujoco_servo(*driven, inertia);
         d.note(fmt::format(

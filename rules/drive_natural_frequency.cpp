@@ -124,8 +124,11 @@ class DriveNaturalFrequency final : public Rule {
       return;
     }
 
+    // Part of what the drive moves is left out of I (a loop, a coupling): the true nf is lower,
+    // so past the bound is likely, not proven.
+    const HiddenLoad* hidden = joint.hidden_load ? &*joint.hidden_load : nullptr;
     Diagnostic& d = out.report(
-        at, least ? Severity::Warning : Severity::Error,
+        at, least || hidden ? Severity::Warning : Severity::Error,
         mujoco ? fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, {} under {}",
                              short_name(joint), format_number(nf, 4), format_number(bound, 4),
                              mujoco->verdict() == physics::StepVerdict::Grows ? "diverges" : "undamped",
@@ -149,6 +152,10 @@ class DriveNaturalFrequency final : public Rule {
     if (least)
       d.note("It is above the bound unless those links are heavy: PhysX computes their mass from their colliders, "
              "which a text linter cannot read; author it to judge the drive exactly.");
+    if (hidden)
+      d.note(hidden->span, fmt::format("I leaves out part of what the drive moves: {}. With it the natural frequency "
+                                       "is lower, by how much the file cannot tell, so this is a warning.",
+                                       hidden->what));
     if (mujoco)
       for (const std::string& note : mujoco->notes()) d.note(note);
     if (rate.solver == physics::Solver::PGS)

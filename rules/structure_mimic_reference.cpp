@@ -84,19 +84,28 @@ class StructureMimicReference final : public Rule {
                              asset.format == SourceFormat::Urdf ? "urdfdom accepts the file, but " : "The file loads, but "));
       } else if (reference->is_mimic()) {
         const bool mujoco = asset.format == SourceFormat::Mjcf;
+        const bool physx = asset.format == SourceFormat::Usda;
         Diagnostic& d =
-            out.report(mimic.reference.span, mujoco ? Severity::Info : Severity::Error,
+            out.report(mimic.reference.span, mujoco || physx ? Severity::Info : Severity::Error,
                        fmt::format("{} {} '{}', which itself {} '{}'", joint_label(joint),
                                    mujoco ? "is coupled to" : "mimics", reference->name.text,
                                    mujoco ? "is coupled to" : "mimics", reference->mimic->reference.text));
         // MuJoCo solves all equality constraints together (engine_core_constraint.c builds one
         // row per equality in the same constraint system), so a chain is as valid as a star.
+        // PhysX 5 solves each mimic joint as its own constraint between two dofs, iteration by
+        // iteration (FeatherstoneArticulation::solveInternalMimicJointConstraints), so a chain
+        // converges like any set of coupled constraints.
         if (mujoco)
           d.note("MuJoCo solves every equality constraint together, so the chain simulates as written there; a "
-                 "conversion to URDF or USD needs it flattened, because PhysX's mimic joint and most URDF importers "
-                 "follow only a joint that is not itself a mimic.");
+                 "conversion to URDF needs it flattened, because most URDF consumers follow only a joint that is not "
+                 "itself a mimic.");
+        else if (physx)
+          d.note("PhysX solves each mimic joint as its own constraint between two joint coordinates, so the chain "
+                 "simulates as written; each link's compliance (naturalFrequency, dampingRatio) adds up along it, and a "
+                 "conversion to URDF needs it flattened.");
         else
-          d.note("Mimic chains are not supported by PhysX or most importers.");
+          d.note("Most URDF consumers follow only a joint that is not itself a mimic: importers drop the inner link "
+                 "or refuse the file.");
         d.note(reference->name.span, fmt::format("Make both follow '{}'.", reference->mimic->reference.text));
       } else if (!is_single_dof(reference->type)) {
         out.report(mimic.reference.span,

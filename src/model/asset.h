@@ -102,11 +102,6 @@ struct Drive {
   std::string damping_unknown;
   // A damping the file does not write but the engine derives (MJCF dampratio): how, with numbers.
   std::string damping_origin;
-  // What the drive also moves that its joint's inertia at rest leaves out (MJCF: a body hung on
-  // a spatial tendon that the joint winds): the judged inertia is then only a lower bound.
-  // Empty when there is none; `load_span` is the element that carries the load.
-  std::string load_beyond_inertia;
-  Span load_span;
   OptQuantity max_force;   // N·m or N; unset = unlimited
   DriveType type = DriveType::Force;
   Span type_span;
@@ -133,6 +128,15 @@ struct Motor {
   Quantity rotor_inertia;  // kg·m²
   double gear_ratio = 1.0;
   std::string origin;      // where it was declared, for messages
+};
+
+// What a joint also moves that its own inertia at rest (Mᵢᵢ, every other joint held) leaves
+// out: a body hung on a spatial tendon it winds, the joints a loop closure or a coupling tendon
+// ties to it (MJCF). Rules that compare with that inertia know it is incomplete.
+struct HiddenLoad {
+  std::string what;   // "it also turns joint 'neck_pitch' through the weld at line 403"
+  Span span;          // the element that carries the load
+  bool rope = false;  // a hanging body: the inertia is then a lower bound
 };
 
 // Whether an actuator moves a joint. MJCF says so for every joint (an actuator's joint or
@@ -181,6 +185,7 @@ struct Joint {
   // PhysX ignores them, but they show what someone meant, e.g. gains copied elsewhere.
   Boxed<Drive> inactive_drive;
   Boxed<Mimic> mimic;
+  Boxed<HiddenLoad> hidden_load;
 
   bool is_mimic() const { return mimic.has_value(); }
 };

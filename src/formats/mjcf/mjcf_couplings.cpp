@@ -78,6 +78,8 @@ std::optional<std::string> side(const XMLElement* el, const char* body, const ch
 struct FixedTendon {
   std::vector<std::string> joints;
   bool coupling = false;
+  Span span;
+  std::string label;
 };
 
 FixedTendon read_fixed(const MjcfSources& sources, const XMLElement* fixed, const Defaults& defaults,
@@ -103,6 +105,10 @@ FixedTendon read_fixed(const MjcfSources& sources, const XMLElement* fixed, cons
   if (limited && range_attr && sweep_known && sweep > 0)
     if (const auto range = values.numbers(range_attr, "range", 2))
       tendon.coupling = (*range)[1] - (*range)[0] <= kCouplingWidth * sweep;
+  tendon.span = values.element_span(fixed);
+  const char* name = fixed->Attribute("name");
+  tendon.label = name ? "fixed tendon '" + std::string(trim(name)) + "'"
+                      : "the fixed tendon at line " + std::to_string(tendon.span.line);
   return tendon;
 }
 
@@ -152,7 +158,7 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
       }
       if (std::string_view(fixed->Name()) != "fixed") continue;
       FixedTendon tendon = read_fixed(sources, fixed, defaults, compiler, values, asset);
-      if (tendon.coupling) out.tendons.push_back(tendon.joints);
+      if (tendon.coupling) out.tendons.push_back({tendon.joints, tendon.span, tendon.label});
       if (const char* name = fixed->Attribute("name")) {
         out.fixed[name] = tendon.joints;
         named[std::string(trim(name))] = std::move(tendon);
@@ -169,18 +175,23 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
       if (tag == "joint") {
         const char* j1 = c->Attribute("joint1");
         const char* j2 = c->Attribute("joint2");
-        if (j1) out.joint_pairs.emplace_back(std::string(trim(j1)), j2 ? std::string(trim(j2)) : std::string());
+        if (j1)
+          out.joint_pairs.push_back({std::string(trim(j1)), j2 ? std::string(trim(j2)) : std::string(), values.element_span(c)});
       } else if (tag == "tendon") {
         for (const char* attr : {"tendon1", "tendon2"})
           if (const char* t = c->Attribute(attr); t && named.contains(std::string(trim(t))))
-            out.tendons.push_back(named.at(std::string(trim(t))).joints);
+            out.tendons.push_back({named.at(std::string(trim(t))).joints, values.element_span(c),
+                                   named.at(std::string(trim(t))).label + " (held by a tendon equality)"});
       } else if (tag == "connect" || tag == "weld") {
         const auto a = side(c, "body1", "site1", bodies);
         const auto b = side(c, "body2", "site2", bodies);
         if (!a || !b) continue;
         if (bodies.mocap.contains(*a)) out.mocap_driven.push_back(*b);
         else if (bodies.mocap.contains(*b)) out.mocap_driven.push_back(*a);
-        else out.loops.emplace_back(*a, *b);
+        else {
+          const Span span = values.element_span(c);
+          out.loops.push_back({*a, *b, span, fmt::format("the {} at line {}", tag, span.line)});
+        }
       }
     }
   }
@@ -193,7 +204,8 @@ void drive_through_couplings(const Couplings& couplings, Asset& asset) {
   // Until nothing changes: a coupling tendon may reach a joint through another one.
   for (bool changed = true; changed;) {
     changed = false;
-    for (const auto& members : couplings.tendons) {
+    for (const CouplingTendon& tendon : couplings.tendons) {
+      const auto& members = tendon.joints;
       const bool driven = std::any_of(members.begin(), members.end(), [&](const std::string& name) {
         const auto i = joint_named(asset, name);
         return i && asset.joints[*i].actuation == Actuation::Actuated;
@@ -214,17 +226,98 @@ void note_rope_loads(const Couplings& couplings, Asset& asset) {
     for (const std::string& body : rope.bodies) paths.push_back(path_to_root(asset, body));
     for (std::size_t j = 0; j < asset.joints.size(); ++j) {
       Joint& joint = asset.joints[j];
-      if (!joint.drive || !joint.drive->load_beyond_inertia.empty()) continue;
+      if (!joint.drive || joint.hidden_load) continue;
       const auto moves = [&](const std::vector<std::size_t>& path) { return std::find(path.begin(), path.end(), j) != path.end(); };
       const bool winds = std::any_of(paths.begin(), paths.end(), moves);
       // A body that moves on joints of its own, not on this one: what the rope lifts.
       const auto load = std::find_if(paths.begin(), paths.end(), [&](const auto& path) { return !path.empty() && !moves(path); });
       if (!winds || load == paths.end()) continue;
-      joint.drive->load_beyond_inertia = fmt::format("it also pulls body '{}' through {}, which its M₀ᵢᵢ leaves out",
-                                                     rope.bodies[static_cast<std::size_t>(load - paths.begin())], rope.label);
-      joint.drive->load_span = rope.span;
+      joint.hidden_load = HiddenLoad{fmt::format("it also pulls body '{}' through {}",
+                                                 rope.bodies[static_cast<std::size_t>(load - paths.begin())], rope.label),
+                                     rope.span, true};
     }
   }
+}
+
+namespace {
+
+// The joints a loop ties together: on one body's path to the root and not on the other's.
+std::vector<std::size_t> loop_members(const Asset& asset, const Loop& loop) {
+  const std::vector<std::size_t> pa = path_to_root(asset, loop.body1), pb = path_to_root(asset, loop.body2);
+  std::vector<std::size_t> members;
+  for (const std::size_t i : pa)
+    if (std::find(pb.begin(), pb.end(), i) == pb.end()) members.push_back(i);
+  for (const std::size_t i : pb)
+    if (std::find(pa.begin(), pa.end(), i) == pa.end()) members.push_back(i);
+  return members;
+}
+
+std::string joint_list(const Asset& asset, const std::vector<std::size_t>& joints) {
+  constexpr std::size_t kNamed = 3;
+  std::string names;
+  for (std::size_t k = 0; k < joints.size() && k < kNamed; ++k)
+    names += (k == 0 ? "'" : k + 1 == joints.size() ? " and '" : ", '") + asset.joints[joints[k]].name.text + "'";
+  if (joints.size() > kNamed) names += fmt::format(" and {} more", joints.size() - kNamed);
+  return names;
+}
+
+// What each actuated joint also turns, coupling by coupling, in document order.
+struct Turned {
+  std::vector<std::size_t> joints;
+  Span span;
+  std::string label;
+};
+using TurnedBy = std::map<std::size_t, std::vector<Turned>>;
+
+void note_turned(const Asset& asset, const std::vector<std::size_t>& members, const Span& span, const std::string& label,
+                 TurnedBy& turned) {
+  for (const std::size_t i : members) {
+    if (asset.joints[i].actuation != Actuation::Actuated) continue;
+    std::vector<std::size_t> others;
+    for (const std::size_t j : members)
+      if (j != i && asset.joints[j].type != JointType::Fixed && std::find(others.begin(), others.end(), j) == others.end())
+        others.push_back(j);
+    if (!others.empty()) turned[i].push_back({std::move(others), span, label});
+  }
+}
+
+void write_turned(const TurnedBy& turned, Asset& asset) {
+  for (const auto& [i, couplings] : turned) {
+    Joint& joint = asset.joints[i];
+    if (joint.hidden_load) continue;  // a rope's load, noted first
+    std::string what = "it also turns ";
+    for (std::size_t k = 0; k < couplings.size(); ++k) {
+      const Turned& t = couplings[k];
+      what += fmt::format("{}joint{} {} through {}", k == 0 ? "" : k + 1 == couplings.size() ? " and " : ", ",
+                          t.joints.size() == 1 ? "" : "s", joint_list(asset, t.joints), t.label);
+    }
+    joint.hidden_load = HiddenLoad{std::move(what), couplings.front().span, false};
+  }
+}
+
+}  // namespace
+
+void note_coupled_loads(const Couplings& couplings, Asset& asset) {
+  TurnedBy turned;
+  for (const Loop& loop : couplings.loops) note_turned(asset, loop_members(asset, loop), loop.span, loop.label, turned);
+  for (const CouplingTendon& tendon : couplings.tendons) {
+    std::vector<std::size_t> members;
+    for (const std::string& name : tendon.joints)
+      if (const auto i = joint_named(asset, name)) members.push_back(*i);
+    note_turned(asset, members, tendon.span, tendon.label, turned);
+  }
+  // A linear joint equality became a mimic, which the inertia rules follow; any other couples
+  // the joints in a way they cannot.
+  for (const JointPair& pair : couplings.joint_pairs) {
+    const auto a = joint_named(asset, pair.first), b = joint_named(asset, pair.second);
+    if (!a || !b) continue;
+    const auto follows = [&](std::size_t x, std::size_t y) {
+      return asset.joints[x].is_mimic() && asset.joints[x].mimic->reference.text == asset.joints[y].name.text;
+    };
+    if (follows(*a, *b) || follows(*b, *a)) continue;
+    note_turned(asset, {*a, *b}, pair.span, fmt::format("the joint equality at line {}", pair.span.line), turned);
+  }
+  write_turned(turned, asset);
 }
 
 void mark_linkages(const Couplings& couplings, Asset& asset) {
@@ -239,24 +332,15 @@ void mark_linkages(const Couplings& couplings, Asset& asset) {
       changed = true;
     }
   };
-  // The joints each loop ties together: on one body's path to the root and not on the other's.
   std::vector<std::vector<std::size_t>> loops;
-  for (const auto& [a, b] : couplings.loops) {
-    const std::vector<std::size_t> pa = path_to_root(asset, a), pb = path_to_root(asset, b);
-    std::vector<std::size_t> members;
-    for (const std::size_t i : pa)
-      if (std::find(pb.begin(), pb.end(), i) == pb.end()) members.push_back(i);
-    for (const std::size_t i : pb)
-      if (std::find(pa.begin(), pa.end(), i) == pa.end()) members.push_back(i);
-    loops.push_back(std::move(members));
-  }
+  for (const Loop& loop : couplings.loops) loops.push_back(loop_members(asset, loop));
   // Until nothing changes: a chain of couplings passes the drive along.
   do {
     changed = false;
-    for (const auto& members : couplings.tendons)
-      if (std::any_of(members.begin(), members.end(), [&](const std::string& m) { return drives(index(m)); }))
-        for (const std::string& name : members) link(index(name));
-    for (const auto& [first, second] : couplings.joint_pairs) {
+    for (const CouplingTendon& tendon : couplings.tendons)
+      if (std::any_of(tendon.joints.begin(), tendon.joints.end(), [&](const std::string& m) { return drives(index(m)); }))
+        for (const std::string& name : tendon.joints) link(index(name));
+    for (const auto& [first, second, span] : couplings.joint_pairs) {
       if (second.empty()) continue;
       if (drives(index(first))) link(index(second));
       if (drives(index(second))) link(index(first));

@@ -30,12 +30,32 @@ struct Rope {
   std::string label;  // "spatial tendon 'cable'" / "the spatial tendon at line 123"
 };
 
+// A coupling tendon (a fixed tendon held to a narrow range, or one a tendon equality ties).
+struct CouplingTendon {
+  std::vector<std::string> joints;
+  Span span;
+  std::string label;  // "fixed tendon 'waist_roll_coupling'"
+};
+
+// joint1 and joint2 (empty: none, the joint is held) of an <equality><joint>.
+struct JointPair {
+  std::string first, second;
+  Span span;
+};
+
+// Two bodies a connect or weld equality ties together, closing a kinematic loop.
+struct Loop {
+  std::string body1, body2;
+  Span span;
+  std::string label;  // "the weld at line 403"
+};
+
 struct Couplings {
   FixedTendons fixed;                              // every named fixed tendon's joints
-  std::vector<std::vector<std::string>> tendons;  // the joints of each coupling tendon
-  std::vector<std::pair<std::string, std::string>> loops;  // bodies a connect or weld ties together
+  std::vector<CouplingTendon> tendons;
+  std::vector<Loop> loops;
   std::vector<std::string> mocap_driven;                   // bodies welded or connected to a mocap body
-  std::vector<std::pair<std::string, std::string>> joint_pairs;  // joint1, joint2 of an <equality><joint>
+  std::vector<JointPair> joint_pairs;
   std::vector<Rope> ropes;
 };
 
@@ -51,6 +71,11 @@ void drive_through_couplings(const Couplings& couplings, Asset& asset);
 // Notes on each drive that winds a rope hung with a body the drive's joint does not otherwise
 // move: MuJoCo's M₀ᵢᵢ leaves that body out. Runs after the actuators are read.
 void note_rope_loads(const Couplings& couplings, Asset& asset);
+
+// Notes on each actuated joint of a loop, a coupling tendon or a joint equality that is not a
+// mimic (a polynomial coupling) the other joints it turns through it: its Mᵢᵢ (every other
+// joint held) leaves them out. Runs after the joint equalities have made their mimics.
+void note_coupled_loads(const Couplings& couplings, Asset& asset);
 
 // Marks as part of a linkage the passive joints that a loop, a joint equality or a coupling
 // tendon ties to an actuated joint (directly or through other linkage joints). Passive joints

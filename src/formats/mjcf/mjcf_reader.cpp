@@ -101,6 +101,7 @@ class Reader {
     }
     // After the actuators: which side of a coupling is driven decides which one follows.
     for (const XMLElement* el : joint_equalities) read_equality_joint(el);
+    note_coupled_loads(couplings, result_.asset);
     result_.asset.index_names();  // after the equalities: they make the mimics
     // Once the whole tree is known: MuJoCo derives kv from dampratio and the inertia at qpos0.
     derive_dampratio_damping(damp_ratios, values_, result_.asset);
