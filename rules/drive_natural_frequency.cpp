@@ -61,32 +61,57 @@ class DriveNaturalFrequency final : public Rule {
   }
 
  private:
+  // Above the bound on the least inertia the drive can see, the verdict rests on the masses
+  // PhysX gives the links that author none (from their colliders): a hand at the end of an arm
+  // can bring the drive within, a flange cannot. What they must add is what an engineer can judge.
+  static void report_unjudged(const DrivenJoint& driven, double least, const physics::Articulation& lower,
+                              const Span& at, Reporter& out) {
+    const Joint& joint = *driven.joint;
+    const physics::SimulationRate& rate = driven.rate;
+    const double bound = rate.frequency_bound();
+    const double nf = physics::natural_frequency(driven.stiffness, least);
+    const double needed = driven.stiffness / (bound * bound);
+    const std::vector<std::string>& massless = lower.assumed_massless();
+    Diagnostic& d = out.report(at, Severity::Info,
+                               fmt::format("drive of {}: natural frequency not judged, {} link{} without mass", short_name(joint),
+                                           massless.size(), massless.size() == 1 ? "" : "s"));
+    d.note(fmt::format("For {}: on the authored masses, with {} taken as massless, nf = sqrt(k / I) = sqrt({} / {} {}) = "
+                       "{} rad/s, above the {} bound {} rad/s ({}). Mass anywhere only raises I, so that is the most nf "
+                       "can be.",
+                       joint_label(joint), name_list(massless),
+                       describe_gain(driven.drive->stiffness, driven.stiffness, stiffness_unit(joint)), format_number(least, 3),
+                       driven.inertia_unit(), format_number(nf, 4), physics::solver_name(rate.solver),
+                       format_number(bound, 4), rate.step_text()));
+    d.note(fmt::format("The drive is within the bound if those links add at least {} {} to what it sees (I ≥ k / bound² = "
+                       "{} {}). PhysX computes their mass from their colliders, which a text linter cannot read: author "
+                       "their mass to have the drive judged. Inertias: {}.",
+                       format_number(needed - least, 3), driven.inertia_unit(), format_number(needed, 3),
+                       driven.inertia_unit(), driven.inertias_text()));
+  }
+
   static void check_drive(const DrivenJoint& driven, const Settings& settings, const Span& at, Reporter& out,
                           const physics::Articulation* lower) {
     const Joint& joint = *driven.joint;
     const Drive& drive = *driven.drive;
     const physics::SimulationRate& rate = driven.rate;
     const double bound = rate.frequency_bound();
-    // An arm's drive judged on the lighter link because some links author no mass: the
-    // articulation without them is what the drive sees at the least, so nf on it is an upper
-    // bound. Within the PhysX bound there, the drive is within it whatever PhysX gives those
-    // links; above it, it is above unless their masses are large. The lighter link is no
-    // figure for an arm either way.
-    std::optional<physics::ArticulatedInertia> least;
+    // An arm's drive that falls back to the lighter link because some links author no mass:
+    // the articulation with them massless is the least the drive can see. Within the bound
+    // there, it is within whatever PhysX gives those links.
     if (lower && rate.solver != physics::Solver::MuJoCo) {
       const physics::ArticulatedInertia at_least = lower->inertia(joint);
       if (at_least.known) {
         if (physics::natural_frequency(driven.stiffness, at_least.value) <= bound) return;
-        least = at_least;
+        return report_unjudged(driven, at_least.value, *lower, at, out);
       }
     }
-    const double inertia = least ? least->value : driven.inertia_used;
+    const double inertia = driven.inertia_used;
     const double nf = physics::natural_frequency(driven.stiffness, inertia);
     const double h_nf = rate.h() * nf;
-    if (!least && nf <= rate.timesteps_per_second) return;
+    if (nf <= rate.timesteps_per_second) return;
     const Unit k_unit = stiffness_unit(joint), d_unit = damping_unit(joint);
 
-    if (!least && nf <= bound) {
+    if (nf <= bound) {
       Diagnostic& d = out.report(
           at, Severity::Info,
           fmt::format("drive of {}: natural frequency {} rad/s is {}× the rate, within the {} bound {} rad/s",
@@ -128,30 +153,16 @@ class DriveNaturalFrequency final : public Rule {
     // so past the bound is likely, not proven.
     const HiddenLoad* hidden = joint.hidden_load ? &*joint.hidden_load : nullptr;
     Diagnostic& d = out.report(
-        at, least || hidden ? Severity::Warning : Severity::Error,
+        at, hidden ? Severity::Warning : Severity::Error,
         mujoco ? fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, {} under {}",
                              short_name(joint), format_number(nf, 4), format_number(bound, 4),
                              mujoco->verdict() == physics::StepVerdict::Grows ? "diverges" : "undamped",
                              physics::integrator_name(rate.integrator))
-           : least ? fmt::format("drive of {}: natural frequency {} rad/s on the authored masses > {} bound {} rad/s",
-                                 short_name(joint), format_number(nf, 4), physics::solver_name(rate.solver),
-                                 format_number(bound, 4))
-               : fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
+           : fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
                              format_number(nf, 4), physics::solver_name(rate.solver), format_number(bound, 4),
                              format_number(h_nf, 3)));
-    if (least)
-      d.note(fmt::format("For {}: nf = sqrt(k / I) = sqrt({} / {} {}) = {} rad/s on the articulation with the links that "
-                         "author no mass ({}) taken as massless: 1/r can only be larger, so nf is at most that. "
-                         "Inertias: {}; the guide's lighter link is no figure for an arm's joint.",
-                         joint_label(joint), describe_gain(drive.stiffness, driven.stiffness, stiffness_unit(joint)),
-                         format_number(inertia, 3), driven.inertia_unit(), format_number(nf, 4),
-                         name_list(lower->assumed_massless()), driven.inertias_text()));
-    else
       d.note(derivation(driven, nf));
     d.note(bound_text(rate, h_nf));
-    if (least)
-      d.note("It is above the bound unless those links are heavy: PhysX computes their mass from their colliders, "
-             "which a text linter cannot read; author it to judge the drive exactly.");
     if (hidden)
       d.note(hidden->span, fmt::format("I leaves out part of what the drive moves: {}. With it the natural frequency "
                                        "is lower, by how much the file cannot tell, so this is a warning.",

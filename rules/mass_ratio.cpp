@@ -1,6 +1,5 @@
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <set>
 #include <vector>
 
@@ -39,6 +38,15 @@ class MassRatio final : public Rule {
     const auto judged = [&](const physics::Body* body) {
       return body && !body->world && body->mass_known && body->mass > 0 && (!fixed_root || moved.count(body));
     };
+    // MuJoCo simulates a tree in joint coordinates: a light body between two joints (the
+    // virtual link of a two-axis joint) is moved, contacts and all, only through the joints
+    // above it, whose inertia holds everything beyond it too; its own mass changes nothing.
+    std::set<const physics::Body*> carries_joint;
+    for (const Joint& joint : asset.joints)
+      if (is_single_dof(joint.type)) carries_joint.insert(articulation.side(joint, 0));
+    const auto virtual_link = [&](const physics::Body* body) {
+      return asset.format == SourceFormat::Mjcf && carries_joint.count(body) > 0;
+    };
     std::vector<Pair> found;
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type)) continue;
@@ -47,6 +55,7 @@ class MassRatio final : public Rule {
       if (a == b || !judged(a) || !judged(b)) continue;
       const physics::Body* light = a->mass < b->mass ? a : b;
       const physics::Body* heavy = light == a ? b : a;
+      if (virtual_link(light)) continue;
       const double ratio = heavy->mass / light->mass;
       if (ratio >= max_ratio) found.push_back({&joint, light, heavy, ratio});
     }
@@ -63,9 +72,14 @@ class MassRatio final : public Rule {
                        joint_label(*worst.joint), format_number(worst.heavy->mass, 4), worst.heavy->name(),
                        format_number(worst.light->mass, 4), worst.light->name(), format_number(worst.ratio, 3),
                        format_number(max_ratio)));
-    d.note("PhysX's iterative solvers (TGS and PGS) resolve a constraint between two bodies mostly by moving the "
-           "lighter one; at this ratio contacts and limit rows on the light body converge poorly, and the light body "
-           "jitters or passes through what it touches.");
+    if (asset.format == SourceFormat::Mjcf)
+      d.note("MuJoCo moves the light body through the joint that carries it, whose inertia is then almost only that "
+             "body's: a contact or limit on it acts at a time scale the step barely resolves, and the light body "
+             "jitters or passes through what it touches.");
+    else
+      d.note("PhysX's iterative solvers (TGS and PGS) resolve a constraint between two bodies mostly by moving the "
+             "lighter one; at this ratio contacts and limit rows on the light body converge poorly, and the light body "
+             "jitters or passes through what it touches.");
     d.note("A mass this small is usually a placeholder for a frame or sensor: weld it with a fixed joint, or give it "
            "its measured mass.");
     for (std::size_t i = 1; i < found.size() && i <= 5; ++i)
