@@ -9,6 +9,7 @@
 // list of target lists.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,19 +34,32 @@ enum class ValueKind : std::uint8_t {
 const char* value_kind_name(ValueKind kind);
 
 struct DictEntry;
+struct Value;
+
+// The items of a lazy list kept outside the layer's text, as a binary layer stores them
+// (a crate's mesh arrays): read only when asked, each number the one its text reads as.
+class HeldItems {
+ public:
+  virtual ~HeldItems() = default;
+  // Every number in text order, flattened as read_numbers reads a list.
+  virtual void append_numbers(std::vector<double>& out) const = 0;
+  // The items as the parser builds them from the text.
+  virtual std::vector<Value> elements() const = 0;
+};
 
 struct Value {
   ValueKind kind = ValueKind::None;
   bool is_integer = false;  // Number written without '.', exponent, inf or nan
   // List whose elements were not materialized (large numeric arrays): `elements` is
   // empty and `count` holds the number of top-level items. Use materialize() or
-  // read_numbers() (parser.h) to read them.
+  // read_numbers() (parser.h) to read them: from `held` when set, else from the text at `span`.
   bool lazy = false;
   Span span;            // the whole value as written (quotes, brackets included)
   double number = 0.0;  // Number
   std::string text;     // String/Identifier/AssetPath/Path contents, decoded
   std::size_t count = 0;        // Tuple/List: number of items (also when lazy)
   std::vector<Value> elements;  // Tuple/List items (empty when lazy)
+  std::shared_ptr<const HeldItems> held;  // a lazy list's items, when not in the text
   // Dictionary entries. For an AssetPath/Path inside references/payload/subLayers,
   // the `( offset = 1; scale = 2 )` parameter block.
   std::vector<DictEntry> entries;

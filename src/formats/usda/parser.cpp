@@ -1029,6 +1029,7 @@ std::variant<Value, ParseError> parse_value_at(const SourceFile& file, FileId id
 
 std::variant<std::vector<Value>, ParseError> parse_elements(const Value& list, const SourceFile& file, FileId id) {
   if (!list.lazy) return list.elements;
+  if (list.held) return list.held->elements();
   ParseOptions options;
   options.lazy_arrays = false;
   try {
@@ -1058,6 +1059,9 @@ bool read_numbers(const Value& value, std::string_view text, std::vector<double>
       if (!value.lazy) {
         for (const Value& e : value.elements)
           if (!read_numbers(e, text, out)) return false;
+        return true;
+      } else if (value.held) {
+        value.held->append_numbers(out);
         return true;
       } else {
         if (value.span.end() > text.size()) return false;

@@ -14,6 +14,7 @@
 #include "formats/usda/literals.h"
 #include "formats/usda/parser.h"
 #include "formats/usdc/crate_file.h"
+#include "formats/usdc/crate_held_array.h"
 #include "formats/usdc/crate_spec_index.h"
 #include "formats/usdc/crate_types.h"
 #include "formats/usdc/crate_usda.h"
@@ -190,17 +191,17 @@ class Builder {
     return e && e->num != Num::StringIdx && e->num != Num::TokenIdx && e->num != Num::AssetIdx;
   }
 
-  // Such an array, longer than kEagerArrayItems (value_node took the shorter ones): its
-  // literal in the source, kept lazy as the parser keeps it (without scanning it again).
+  // Such an array, longer than kEagerArrayItems (value_node took the shorter ones): kept
+  // lazy as the parser keeps it, with the crate's own items instead of a literal.
   usda::Value lazy_array(ValueRep rep) {
-    const std::size_t from = text_.size();
+    ArrayItems items = values_.array_items(rep, kWhat);
+    if (items.count <= kEagerArrayItems) throw UseText{};
     usda::Value v;
     v.kind = usda::ValueKind::List;
-    v.count = values_.append_array(rep, kWhat, text_);
-    if (v.count <= kEagerArrayItems) throw UseText{};
+    v.count = items.count;
     v.lazy = true;
-    v.span = Span{id_, from, text_.size() - from, line_, static_cast<std::uint32_t>(from - line_start_ + 1)};
-    text_ += ' ';
+    v.span = mark();
+    v.held = hold_numeric_array(std::move(items), v.span);
     return v;
   }
 

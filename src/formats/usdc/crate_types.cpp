@@ -49,7 +49,7 @@ float half_to_float(std::uint16_t h) {
   return sign ? -v : v;
 }
 
-void append_component(std::string& out, const CrateFile& file, Num num, const char* p, const std::string& what) {
+void append_stored_number(std::string& out, Num num, const char* p) {
   const auto integer = [&](auto v) { append_number(out, v); };
   switch (num) {
     case Num::Bool: out += *p ? "1" : "0"; return;
@@ -61,9 +61,16 @@ void append_component(std::string& out, const CrateFile& file, Num num, const ch
     case Num::Half: append_real(out, half_to_float(load<std::uint16_t>(p))); return;
     case Num::Float: append_real(out, load<float>(p)); return;
     case Num::Double: append_real(out, load<double>(p)); return;
+    default: return;
+  }
+}
+
+void append_component(std::string& out, const CrateFile& file, Num num, const char* p, const std::string& what) {
+  switch (num) {
     case Num::StringIdx: out += quoted(file.string(load<std::uint32_t>(p), what.c_str())); return;
     case Num::TokenIdx: out += quoted(file.token(load<std::uint32_t>(p), what.c_str())); return;
     case Num::AssetIdx: out += asset_literal(file.string(load<std::uint32_t>(p), what.c_str())); return;
+    default: append_stored_number(out, num, p); return;
   }
 }
 

@@ -67,6 +67,8 @@ T load(const char* p) {
   return v;
 }
 
+// Appends one stored number (any Num but the string, token and asset indexes) as USDA writes it.
+void append_stored_number(std::string& out, Num num, const char* p);
 // Appends one stored component as USDA writes it. Large arrays are millions of these: they
 // are formatted in place, without a string per component.
 void append_component(std::string& out, const CrateFile& file, Num num, const char* p, const std::string& what);

@@ -10,22 +10,27 @@ namespace {
 
 using Mark = std::function<Span()>;
 
-NumberCache::Read read_as_text(const CrateFile& file, Num num, const char* p, const std::string& what) {
+}  // namespace
+
+NumberCache::Read read_as_text(Num num, const char* p) {
   std::string text;
-  append_component(text, file, num, p, what);
+  append_stored_number(text, num, p);
   // What the lexer calls a float: a fraction, an exponent, inf or nan.
   return {usda::parse_number(text), text.find_first_of(".eEin") == std::string::npos};
 }
 
+namespace {
+
 template <class Bits, class Map>
-NumberCache::Read cached(Map& map, const CrateFile& file, Num num, const char* p, const std::string& what) {
+NumberCache::Read cached(Map& map, Num num, const char* p) {
   const auto [it, added] = map.try_emplace(load<Bits>(p));
-  if (added) it->second = read_as_text(file, num, p, what);
+  if (added) it->second = read_as_text(num, p);
   return it->second;
 }
 
 // Nodes are filled where they stand (a node is large: moving one costs as much as filling it).
-void component_node(usda::Value& v, const CrateFile& file, Num num, const char* p, const std::string& what,
+// `file` names the strings, tokens and asset paths; a number needs none.
+void component_node(usda::Value& v, const CrateFile* file, Num num, const char* p, const std::string& what,
                     const Mark& mark, NumberCache& numbers) {
   v.span = mark();
   switch (num) {
@@ -33,24 +38,24 @@ void component_node(usda::Value& v, const CrateFile& file, Num num, const char* 
     case Num::TokenIdx: {
       const auto index = load<std::uint32_t>(p);
       v.kind = usda::ValueKind::String;
-      v.text = as_read(num == Num::TokenIdx ? file.token(index, what.c_str()) : file.string(index, what.c_str()));
+      v.text = as_read(num == Num::TokenIdx ? file->token(index, what.c_str()) : file->string(index, what.c_str()));
       return;
     }
     case Num::AssetIdx:
       v.kind = usda::ValueKind::AssetPath;
-      v.text = usda::decode_asset_path(asset_literal(file.string(load<std::uint32_t>(p), what.c_str())));
+      v.text = usda::decode_asset_path(asset_literal(file->string(load<std::uint32_t>(p), what.c_str())));
       return;
     default: break;
   }
-  const NumberCache::Read read = num == Num::Float    ? cached<std::uint32_t>(numbers.floats, file, num, p, what)
-                                 : num == Num::Double ? cached<std::uint64_t>(numbers.doubles, file, num, p, what)
-                                                      : read_as_text(file, num, p, what);
+  const NumberCache::Read read = num == Num::Float    ? cached<std::uint32_t>(numbers.floats, num, p)
+                                 : num == Num::Double ? cached<std::uint64_t>(numbers.doubles, num, p)
+                                                      : read_as_text(num, p);
   v.kind = usda::ValueKind::Number;
   v.number = read.number;
   v.is_integer = read.is_integer;
 }
 
-void element_node(usda::Value& out, const CrateFile& file, const Element& e, const char* p, const std::string& what,
+void element_node(usda::Value& out, const CrateFile* file, const Element& e, const char* p, const std::string& what,
                   const Mark& mark, NumberCache& numbers) {
   if (e.components == 1) return component_node(out, file, e.num, p, what, mark, numbers);
   const std::size_t size = size_of(e.num);
@@ -79,6 +84,11 @@ void element_node(usda::Value& out, const CrateFile& file, const Element& e, con
 
 }  // namespace
 
+void number_element_node(usda::Value& out, const Element& e, const char* p, const std::function<Span()>& mark,
+                         NumberCache& numbers) {
+  element_node(out, nullptr, e, p, "", mark, numbers);
+}
+
 std::string as_read(std::string_view s) {
   const bool plain = std::none_of(s.begin(), s.end(), [](char ch) {
     const auto c = static_cast<unsigned char>(ch);
@@ -103,7 +113,7 @@ std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile
     const std::size_t element_bytes = size_of(e->num) * static_cast<std::size_t>(e->components);
     list.elements.resize(a.count);
     for (std::size_t i = 0; i < a.count; ++i)
-      element_node(list.elements[i], file, *e, a.bytes().data() + i * element_bytes, what, mark, numbers);
+      element_node(list.elements[i], &file, *e, a.bytes().data() + i * element_bytes, what, mark, numbers);
     list.count = list.elements.size();
     return list;
   }
@@ -124,7 +134,7 @@ std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile
     return v;
   }
   usda::Value v;
-  element_node(v, file, *e, bytes.data(), what, mark, numbers);
+  element_node(v, &file, *e, bytes.data(), what, mark, numbers);
   return v;
 }
 

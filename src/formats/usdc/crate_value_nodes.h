@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "formats/usda/ast.h"
+#include "formats/usdc/crate_types.h"
 #include "formats/usdc/crate_values.h"
 #include "model/source.h"
 
@@ -36,6 +37,12 @@ struct NumberCache {
 std::optional<usda::Value> value_node(const ValueReader& values, const CrateFile& file, ValueRep rep,
                                       const std::string& what, bool in_metadata, const std::function<Span()>& mark,
                                       NumberCache& numbers);
+
+// A stored number (not a string, token or asset index) as the parser reads its written form.
+NumberCache::Read read_as_text(Num num, const char* p);
+// An element of numbers (scalar, vector, quaternion, matrix) as its node.
+void number_element_node(usda::Value& out, const Element& e, const char* p, const std::function<Span()>& mark,
+                         NumberCache& numbers);
 
 // A name or string as the parser reads back its quoted form.
 std::string as_read(std::string_view s);
