@@ -30,10 +30,16 @@ namespace fs = std::filesystem;
 namespace usda = assetlint::usda;
 namespace usdc = assetlint::usdc;
 
+// Lazy lists up to this long are also compared as the nodes they materialize to.
+constexpr std::size_t kMaterializedItems = 4096;
+
 // Everything the parser decides about a node, spans aside; lazy lists by their numbers.
 class Dump {
  public:
   explicit Dump(const assetlint::SourceFile& source) : source_(source) {}
+
+  // How many lazy lists were compared as nodes.
+  std::size_t materialized() const { return materialized_; }
 
   std::string layer(const usda::Layer& l) {
     out_ = "version " + l.version + "\n";
@@ -55,6 +61,14 @@ class Dump {
           std::vector<double> numbers;
           out_ += usda::read_numbers(v, source_.view(), numbers) ? "" : "(unreadable)";
           for (double n : numbers) out_ += fmt::format(" {}", n);
+          // And as nodes, as materialize() builds them (kinds, integer-ness, tuples).
+          if (v.count <= kMaterializedItems) {
+            auto items = usda::parse_elements(v, source_, v.span.file);
+            REQUIRE(std::holds_alternative<std::vector<usda::Value>>(items));
+            out_ += " nodes:";
+            ++materialized_;
+            for (const auto& e : std::get<std::vector<usda::Value>>(items)) value(e);
+          }
         } else {
           for (const auto& e : v.elements) value(e);
         }
@@ -131,6 +145,7 @@ class Dump {
   }
 
   const assetlint::SourceFile& source_;
+  std::size_t materialized_ = 0;
   std::string out_;
 };
 
@@ -173,6 +188,7 @@ void check_locations(const assetlint::SourceFile& source, const std::vector<usda
 TEST_CASE("a crate layer built from its specs is the layer its USDA text parses to", "[usdc]") {
   const auto files = crate_files();
   REQUIRE(files.size() >= 4);
+  std::size_t materialized = 0;
   for (const auto& path : files) {
     INFO(path.string());
     const std::string bytes = read_file(path);
@@ -188,11 +204,13 @@ TEST_CASE("a crate layer built from its specs is the layer its USDA text parses 
     const assetlint::SourceFile source(path.string(), std::get<usdc::CrateText>(text).text);
     const auto parsed = usda::parse_layer(source, 3);
     REQUIRE(parsed.ok());
-    const std::string difference =
-        first_difference(Dump(*built->source).layer(*built->layer), Dump(source).layer(parsed.layer()));
+    Dump built_dump(*built->source);
+    const std::string difference = first_difference(built_dump.layer(*built->layer), Dump(source).layer(parsed.layer()));
     CHECK(difference == "");
     check_locations(*built->source, built->layer->prims, "");
+    materialized += built_dump.materialized();
   }
+  CHECK(materialized > 0);  // some long arrays were compared as nodes too
 }
 
 TEST_CASE("a crate layer that cannot be read gives the text path's error", "[usdc]") {
