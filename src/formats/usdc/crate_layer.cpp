@@ -9,6 +9,7 @@
 #include <new>
 #include <span>
 #include <stdexcept>
+#include <unordered_map>
 #include <variant>
 
 #include "formats/usda/literals.h"
@@ -142,6 +143,28 @@ class Builder {
       if (!slot) slot = &f;
     }
     return out;
+  }
+
+  // Crate writes a value once and points every field that holds it there (the same
+  // apiSchemas, the same property names on every link): a value read again is taken from
+  // here by its rep, which names the same bytes.
+  const ListOpValue& list_op(ValueRep rep) {
+    const auto found = list_ops_.find(rep.data);
+    if (found != list_ops_.end()) return found->second;
+    return list_ops_.emplace(rep.data, values_.list_op(rep, kWhat)).first->second;
+  }
+
+  // Property names in the order the text writer lists them.
+  const std::vector<std::string_view>& sorted_properties(const SpecFields& fields) {
+    static const std::vector<std::string_view> kNone;
+    const Field* f = fields[Key::Properties];
+    if (!f) return kNone;
+    const auto found = sorted_properties_.find(f->rep.data);
+    if (found != sorted_properties_.end()) return found->second;
+    std::vector<std::string_view> names = values_.tokens(f->rep, kWhat);
+    if (!std::is_sorted(names.begin(), names.end(), dictionary_less))
+      std::stable_sort(names.begin(), names.end(), dictionary_less);
+    return sorted_properties_.emplace(f->rep.data, std::move(names)).first->second;
   }
 
   std::vector<std::string_view> names(const SpecFields& fields, Key key) {
@@ -281,7 +304,7 @@ class Builder {
         const std::string shown = key == "documentation" ? "doc" : key == "variantSetNames" ? "variantSets" : key;
         if (!valid_name(shown, false)) continue;
         if (values_.is_list_op(f.rep)) {
-          const ListOpValue op = values_.list_op(f.rep, what);
+          const ListOpValue& op = list_op(f.rep);
           // Lists of names (apiSchemas, variantSets) are built as nodes; the others, arcs
           // among them, are read by the parser from their literal.
           const bool names = !is_arc_key(key) && std::all_of(op.parts.begin(), op.parts.end(), [](const auto& part) {
@@ -382,9 +405,7 @@ class Builder {
         p.reorders.push_back(std::move(r));
       }
     }
-    std::vector<std::string_view> properties = names(fields, Key::Properties);
-    if (!std::is_sorted(properties.begin(), properties.end(), dictionary_less))
-      std::stable_sort(properties.begin(), properties.end(), dictionary_less);
+    const std::vector<std::string_view>& properties = sorted_properties(fields);
     // Attributes and prims are large nodes: moved once each instead of on every regrowth.
     p.attributes.reserve(properties.size());
     p.property_order.reserve(properties.size());
@@ -521,7 +542,7 @@ class Builder {
 
   // The declarations of a path list op (`prepend rel x = </a>`), one per list.
   std::vector<usda::PathList> path_lists(ValueRep rep) {
-    const ListOpValue op = values_.list_op(rep, kWhat);
+    const ListOpValue& op = list_op(rep);
     std::vector<usda::PathList> out;
     const auto declaration = [&](usda::ListOp kind) -> usda::PathList& {
       out.emplace_back();
@@ -592,6 +613,8 @@ class Builder {
   std::size_t line_start_ = 0;
   const SourceFile* source_ = nullptr;
   std::vector<Key> keys_;  // by token index
+  std::unordered_map<std::uint64_t, ListOpValue> list_ops_;                          // by rep
+  std::unordered_map<std::uint64_t, std::vector<std::string_view>> sorted_properties_;  // by rep
   NumberCache numbers_;
   const std::function<Span()> mark_ = [this] { return mark(); };
 };
