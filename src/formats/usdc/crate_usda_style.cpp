@@ -1,15 +1,19 @@
 #include "formats/usdc/crate_usda_style.h"
 
 #include <algorithm>
-#include <cctype>
 
 namespace assetlint::usdc {
 
+namespace {
+// ASCII only, as in the "C" locale the program runs in (and without a call per character).
+bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+}  // namespace
+
 bool valid_name(std::string_view s, bool namespaced) {
-  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  if (s.empty() || !(is_letter(s[0]) || s[0] == '_')) return false;
   for (char c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || (namespaced && (c == ':' || c == '.' || c == '-'))))
-      return false;
+    if (!(is_letter(c) || is_digit(c) || c == '_' || (namespaced && (c == ':' || c == '.' || c == '-')))) return false;
   return s.back() != ':';
 }
 
