@@ -86,6 +86,9 @@ Key key_named(std::string_view name) {
   return Key::Metadata;
 }
 
+// Nested dictionaries deeper than this are left to the text path (which refuses them).
+constexpr int kMaxDictionaryDepth = 32;
+
 class Builder {
  public:
   Builder(const CrateFile& file, const SpecIndex& specs, FileId id) : file_(file), specs_(specs), values_(file), id_(id) {}
@@ -152,6 +155,44 @@ class Builder {
     const auto found = list_ops_.find(rep.data);
     if (found != list_ops_.end()) return found->second;
     return list_ops_.emplace(rep.data, values_.list_op(rep, kWhat)).first->second;
+  }
+
+  // A dictionary (customData, customLayerData) as the parser reads its literal, when every
+  // entry is a dictionary or a value value_node builds; nullopt
+  // otherwise (the literal is then written and parsed).
+  std::optional<usda::Value> dictionary_node(ValueRep rep, int depth) {
+    if (depth > kMaxDictionaryDepth) throw UseText{};  // a dictionary holding itself: the text path says so
+    usda::Value v;
+    v.kind = usda::ValueKind::Dictionary;
+    v.span = mark();
+    for (const auto& [key, entry] : values_.dictionary_entries(rep, kWhat)) {
+      // The writer quotes a key that is not an identifier; None, inf and nan read as values.
+      if (key == "None" || key == "inf" || key == "nan") return std::nullopt;
+      const bool bare = valid_name(key, false);
+      usda::DictEntry& e = v.entries.emplace_back();
+      e.span = mark();
+      e.key_span = mark();
+      e.key_value.kind = bare ? usda::ValueKind::Identifier : usda::ValueKind::String;
+      e.key_value.text = bare ? std::string(key) : as_read(key);
+      e.key_value.span = e.key_span;
+      e.key = e.key_value.text;
+      if (entry.type() == kDictionary && !entry.is_array()) {
+        e.type_name = "dictionary";
+        auto nested = dictionary_node(entry, depth + 1);
+        if (!nested) return std::nullopt;
+        e.value = std::move(*nested);
+        continue;
+      }
+      const Element* element = element_of(entry.type());
+      if (!element) return std::nullopt;
+      auto node = value_node(values_, file_, entry, kWhat, false, mark_, numbers_);
+      if (!node) return std::nullopt;
+      e.type_name = element->name;
+      e.type_is_array = entry.is_array();
+      e.value = std::move(*node);
+    }
+    v.count = v.entries.size();
+    return v;
   }
 
   // Property names in the order the text writer lists them.
@@ -332,6 +373,7 @@ class Builder {
         usda::Metadata m = item(usda::ListOp::Explicit, shown);
         std::optional<usda::Value> node;
         if (!is_arc_key(key)) node = value_node(values_, file_, f.rep, what, true, mark_, numbers_);
+        if (!node && f.rep.type() == kDictionary && !f.rep.is_array()) node = dictionary_node(f.rep, 0);
         if (node) {
           m.value = std::move(*node);
         } else {

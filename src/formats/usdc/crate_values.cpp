@@ -368,14 +368,32 @@ std::string ValueReader::dictionary(Cursor& c, const std::string& what, int inde
   return out + indentation(indent) + "}";
 }
 
-Literal ValueReader::vt_value(Cursor& c, const std::string& what, int indent) {
+ValueRep ValueReader::vt_rep(Cursor& c, const std::string& what) const {
   const std::size_t start = c.tell();
   const auto offset = c.read<std::int64_t>();
   if (offset < 0 || static_cast<std::uint64_t>(offset) > c.remaining() + 8) c.fail(fmt::format("value offset {} leaves the file", offset));
   c.seek(start + static_cast<std::uint64_t>(offset));
   const ValueRep rep{c.read<std::uint64_t>()};
   if (is_list_op(rep)) throw UnsupportedValue{what};
-  return literal(rep, what, indent);
+  return rep;
+}
+
+Literal ValueReader::vt_value(Cursor& c, const std::string& what, int indent) {
+  return literal(vt_rep(c, what), what, indent);
+}
+
+std::vector<std::pair<std::string_view, ValueRep>> ValueReader::dictionary_entries(ValueRep rep, const std::string& what) const {
+  std::vector<std::pair<std::string_view, ValueRep>> out;
+  if (rep.type() != kDictionary || rep.is_array()) fail(what, fmt::format("expected a dictionary, found value type {}", rep.type()));
+  if (rep.is_inlined()) return out;
+  Cursor c = at(rep, what);
+  const std::size_t n = c.count(c.read<std::uint64_t>(), 12, "dictionary entries");
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string& key = file_.string(c.read<std::uint32_t>(), what.c_str());
+    out.emplace_back(key, vt_rep(c, what));
+  }
+  return out;
 }
 
 std::string ValueReader::arc(Cursor& c, unsigned type, const std::string& what, int indent) {

@@ -70,6 +70,9 @@ class ValueReader {
   std::size_t append_array(ValueRep rep, const std::string& what, std::string& out) const;
   std::string element_bytes(ValueRep rep, const Element& element, const std::string& what) const;
   std::vector<std::pair<std::string, Literal>> time_samples(ValueRep rep, const std::string& what, int indent);
+  // A dictionary value's entries (key, value), in file order; nested values are not checked
+  // for containing themselves here: the caller limits its depth.
+  std::vector<std::pair<std::string_view, ValueRep>> dictionary_entries(ValueRep rep, const std::string& what) const;
 
  private:
   class Guard;
@@ -77,6 +80,7 @@ class ValueReader {
   std::string array(ValueRep rep, const std::string& what, std::string& out);
   std::string dictionary(Cursor& c, const std::string& what, int indent);
   Literal vt_value(Cursor& c, const std::string& what, int indent);
+  ValueRep vt_rep(Cursor& c, const std::string& what) const;
   std::string arc(Cursor& c, unsigned type, const std::string& what, int indent);
   std::vector<std::string> items(Cursor& c, unsigned type, const std::string& what, int indent);
   Cursor at(ValueRep rep, const std::string& what) const;
