@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <tuple>
 #include <utility>
@@ -79,11 +80,31 @@ class VariantChecker {
   }
 
  private:
-  using Key = std::tuple<std::string, std::string, std::size_t, std::string>;  // rule, layer, offset, message
+  // rule, layer, offset, severity and the message with its numbers blanked: the same finding
+  // at the same place, whatever numbers a variant's masses put in it (an arm's drive judged
+  // with each gripper a variant selects is one finding, not one per gripper).
+  using Key = std::tuple<std::string, std::string, std::size_t, int, std::string>;
 
   static Key key(const std::vector<std::shared_ptr<const SourceFile>>& sources, const Diagnostic& d) {
     const std::string layer = d.span.file < sources.size() ? sources[d.span.file]->path() : std::string();
-    return {d.rule, layer, d.span.offset, d.message};
+    return {d.rule, layer, d.span.offset, static_cast<int>(d.severity), without_numbers(d.message)};
+  }
+
+  static std::string without_numbers(const std::string& message) {
+    std::string out;
+    for (std::size_t i = 0; i < message.size(); ++i) {
+      const char c = message[i];
+      if (std::isdigit(static_cast<unsigned char>(c))) {
+        if (out.empty() || out.back() != '#') out += '#';
+        continue;
+      }
+      // The point, sign and exponent of a number belong to it.
+      const bool inside = !out.empty() && out.back() == '#' && i + 1 < message.size() &&
+                          std::isdigit(static_cast<unsigned char>(message[i + 1])) &&
+                          (c == '.' || c == 'e' || c == '-' || c == '+');
+      if (!inside) out += c;
+    }
+    return out;
   }
 
   // Queues each variant of the sets first seen here that the composition does not already select.
@@ -139,12 +160,15 @@ class VariantChecker {
     const Key k = key(sources, d);
     if (authored_keys_.count(k)) return;
     auto [it, fresh] = found_.try_emplace(k, added_.size());
-    if (fresh) added_.push_back({std::move(d), {}});
-    added_[it->second].choices.push_back(choices);
+    if (fresh) added_.push_back({std::move(d), {}, {}});
+    Added& added = added_[it->second];
+    if (!fresh && d.message != added.diagnostic.message)
+      added.variant_notes.push_back(fmt::format("With {} selected: {}.", selection_label(choices), d.message));
+    added.choices.push_back(choices);
   }
 
   void finish(std::vector<Diagnostic>& diagnostics) {
-    for (auto& [d, choices] : added_) {
+    for (auto& [d, choices, variant_notes] : added_) {
       std::vector<Choice> sets;
       for (const auto& c : choices)
         for (const Choice& choice : c)
@@ -159,6 +183,8 @@ class VariantChecker {
                                       choices.size() == 1 ? joined : "each of " + joined,
                                       authored_selection(authored_, sets)),
                           Span{}});
+      for (std::size_t i = 0; i < variant_notes.size(); ++i)
+        d.notes.insert(d.notes.begin() + 1 + static_cast<std::ptrdiff_t>(i), Note{variant_notes[i], Span{}});
       diagnostics.push_back(std::move(d));
     }
   }
@@ -166,6 +192,7 @@ class VariantChecker {
   struct Added {
     Diagnostic diagnostic;
     std::vector<std::vector<Choice>> choices;
+    std::vector<std::string> variant_notes;  // the same finding in another selection, in its own numbers
   };
 
   const std::shared_ptr<const SourceFile>& root_;

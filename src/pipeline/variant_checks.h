@@ -7,7 +7,10 @@
 //
 // Findings of a variant selection that the authored composition does not have are added to the
 // file's report with the selection in their primary message ("in variant PhysX=Enabled: …") and
-// a note; a finding several variant selections share is reported once, naming them all.
+// a note; a finding several variant selections share is reported once, naming them all. The
+// same finding means the same rule, place and severity and the same message up to its numbers:
+// an arm's drive judged with each gripper a variant selects is reported once, with the other
+// selections' numbers in notes, and not at all when the authored selection already reports it.
 #include <functional>
 #include <memory>
 #include <set>
