@@ -47,6 +47,11 @@ class ArmatureExcessive final : public Rule {
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
       Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, model.spring_drive(joint)};
       if (crutch(c)) c.shared = shared_by_a_steady_drive(model, asset, joint);
+      // Only on the robot's own parts: an object hung from the world (a puck, a leaf) is what
+      // the task moves, and a flywheel there changes the task whatever set the value.
+      const physics::Body* parent = model.articulation().side(joint, 0);
+      if (joint.actuation == Actuation::Passive && parent && !parent->world)
+        c.motor_literal = actuated_sharing_literal(asset, joint);
       if (joint.actuation == Actuation::Passive && touches_nothing(model.articulation(), asset, joint)) {
         report_isolated(c, out);
         continue;
@@ -107,6 +112,7 @@ class ArmatureExcessive final : public Rule {
     double flywheel;
     std::optional<DrivenJoint> driven;
     const Joint* shared = nullptr;  // a steady drive with the same armature literal
+    const Joint* motor_literal = nullptr;  // passive: an actuated joint whose armature is the same literal
     const char* unit() const { return is_angular(joint.type) ? "kg·m²" : "kg"; }
     // Far above everything the joint moves: the drive turns a flywheel.
     // Not when part of the load is left out: the ratio then overstates the armature's share.
@@ -176,7 +182,9 @@ class ArmatureExcessive final : public Rule {
       drive_effect(c, d);
       return;
     }
-    if (joint.actuation == Actuation::Passive && !c.dwarfs()) {
+    // A passive joint that takes its armature from a literal set for the motors (a default class
+    // on every joint): a side effect of that literal on a part that only swings, not modelling.
+    if (joint.actuation == Actuation::Passive && (!c.dwarfs() || c.motor_literal)) {
       Diagnostic& d = out.report(at, Severity::Info,
                                  fmt::format("armature {} of {} ({}× {}) on a free joint no actuator moves", amount,
                                              short_name(joint), times, against));
@@ -184,6 +192,12 @@ class ArmatureExcessive final : public Rule {
       d.note("No actuator reaches this joint and no loop or coupling ties it to one that does: it moves only under "
              "gravity, contact and the reaction of its links, so the armature damps how it swings and loads no drive. "
              "No real mechanism has that inertia; remove it if the joint should swing freely.");
+      if (c.motor_literal)
+        d.note(joint.armature->span,
+               fmt::format("The value is one literal shared with actuated joints ({} first), set for their motors; "
+                           "it reaches this joint as a side effect. Give the passive joints armature 0 (their own "
+                           "class) if they should swing freely.",
+                           joint_label(*c.motor_literal)));
       return;
     }
     if (joint.actuation == Actuation::Passive || joint.actuation == Actuation::Linkage) {
@@ -309,6 +323,18 @@ class ArmatureExcessive final : public Rule {
         return std::nullopt;
     }
     return Crutch{without, inertia};
+  }
+
+  // An actuated joint whose armature is the same literal as this one's (one default class).
+  static const Joint* actuated_sharing_literal(const Asset& asset, const Joint& joint) {
+    const Span& literal = joint.armature->span;
+    if (!literal.valid()) return nullptr;
+    for (const Joint& other : asset.joints) {
+      if (&other == &joint || !other.armature || other.actuation != Actuation::Actuated) continue;
+      const Span& at = other.armature->span;
+      if (at.file == literal.file && at.offset == literal.offset) return &other;
+    }
+    return nullptr;
   }
 
   // Another actuated joint that takes its armature from the same literal (one default class,

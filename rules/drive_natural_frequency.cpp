@@ -89,6 +89,22 @@ class DriveNaturalFrequency final : public Rule {
                        driven.inertia_unit(), driven.inertias_text()));
   }
 
+  static void report_stand_in(const DrivenJoint& driven, const Span& at, Reporter& out) {
+    const Joint& joint = *driven.joint;
+    const physics::SimulationRate& rate = driven.rate;
+    const double bound = rate.frequency_bound();
+    const double needed = driven.stiffness / (bound * bound);
+    Diagnostic& d = out.report(at, Severity::Info,
+                               fmt::format("drive of {}: natural frequency not judged, the articulation's mass is unknown",
+                                           short_name(joint)));
+    d.note(derivation(driven, physics::natural_frequency(driven.stiffness, driven.inertia_used)));
+    d.note(fmt::format("That is above the {} bound {} rad/s ({}) on the lighter link, but the joint moves more than "
+                       "that link; it is within the bound if it moves at least {} {} about its axis (k / bound²). "
+                       "Author the missing masses to have the drive judged.",
+                       physics::solver_name(rate.solver), format_number(bound, 4), rate.step_text(),
+                       format_number(needed, 3), driven.inertia_unit()));
+  }
+
   static void check_drive(const DrivenJoint& driven, const Settings& settings, const Span& at, Reporter& out,
                           const physics::Articulation* lower) {
     const Joint& joint = *driven.joint;
@@ -104,6 +120,11 @@ class DriveNaturalFrequency final : public Rule {
         if (physics::natural_frequency(driven.stiffness, at_least.value) <= bound) return;
         return report_unjudged(driven, at_least.value, *lower, at, out);
       }
+      // Not even that is known (the root authors no mass): the lighter link alone stands in,
+      // and an arm's joint moves more than its lighter link, so past the bound is unproven.
+      if (physics::natural_frequency(driven.stiffness, driven.inertia_used) > bound)
+        return report_stand_in(driven, at, out);
+      return;
     }
     const double inertia = driven.inertia_used;
     const double nf = physics::natural_frequency(driven.stiffness, inertia);

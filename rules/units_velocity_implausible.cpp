@@ -156,6 +156,14 @@ class UnitsVelocityImplausible final : public Rule {
       // A finger's stroke is short, so a modest-looking speed still slams it shut: no unit is blamed.
       v.fast = v.gripper = true;
       return v;
+    } else if (joint.type == JointType::Revolute && range > 2 * std::numbers::pi) {
+      // More than a turn of travel on a revolute joint is a stand-in for "free", not a stroke
+      // to cross: it is judged slow only if one turn takes too long.
+      range = 2 * std::numbers::pi;
+      v.range_text = fmt::format("one turn (its {} range is more than a turn)",
+                                 describe(joint.upper->value - joint.lower->value, joint.lower->unit));
+      v.time = range / velocity.value;
+      if (v.time <= max_time) return std::nullopt;
     } else if (v.time <= max_time) {
       return std::nullopt;
     }
