@@ -325,36 +325,35 @@ class ArmatureExcessive final : public Rule {
     return Crutch{without, inertia};
   }
 
-  // An actuated joint whose armature is the same literal as this one's (one default class).
-  static const Joint* actuated_sharing_literal(const Asset& asset, const Joint& joint) {
+  // The first other joint whose armature is the same literal as this one's (one default class,
+  // one servo type) and that `accept` takes.
+  template <class Accept>
+  static const Joint* sharing_armature_literal(const Asset& asset, const Joint& joint, Accept accept) {
     const Span& literal = joint.armature->span;
     if (!literal.valid()) return nullptr;
     for (const Joint& other : asset.joints) {
-      if (&other == &joint || !other.armature || other.actuation != Actuation::Actuated) continue;
+      if (&other == &joint || !other.armature) continue;
       const Span& at = other.armature->span;
-      if (at.file == literal.file && at.offset == literal.offset) return &other;
+      if (at.file == literal.file && at.offset == literal.offset && accept(other)) return &other;
     }
     return nullptr;
   }
 
-  // Another actuated joint that takes its armature from the same literal (one default class,
-  // one servo type) and whose drive is steady without it: the value is the motor's, set once
-  // for every joint it turns, not a lever tuned for this joint's stability.
+  static const Joint* actuated_sharing_literal(const Asset& asset, const Joint& joint) {
+    return sharing_armature_literal(asset, joint, [](const Joint& other) { return other.actuation == Actuation::Actuated; });
+  }
+
+  // Another actuated joint that takes its armature from the same literal and whose drive is
+  // steady without it: the value is the motor's, set once for every joint it turns, not a
+  // lever tuned for this joint's stability.
   static const Joint* shared_by_a_steady_drive(const DriveModel& model, const Asset& asset, const Joint& joint) {
-    const Span& literal = joint.armature->span;
-    if (!literal.valid()) return nullptr;
-    for (const Joint& other : asset.joints) {
-      if (&other == &joint || !other.armature || other.actuation == Actuation::Passive ||
-          other.actuation == Actuation::Linkage)
-        continue;
-      const Span& at = other.armature->span;
-      if (at.file != literal.file || at.offset != literal.offset) continue;
+    return sharing_armature_literal(asset, joint, [&](const Joint& other) {
+      if (other.actuation == Actuation::Passive || other.actuation == Actuation::Linkage) return false;
       const std::optional<DrivenJoint> driven = model.spring_drive(other);
-      if (driven && !driven->acceleration() && driven->judged.known && (driven->rate.solver != physics::Solver::MuJoCo || driven->damping_known()) &&
-          !crutch(driven, other.armature->value))
-        return &other;
-    }
-    return nullptr;
+      return driven && !driven->acceleration() && driven->judged.known &&
+             (driven->rate.solver != physics::Solver::MuJoCo || driven->damping_known()) &&
+             !crutch(driven, other.armature->value);
+    });
   }
 
   static std::string moved_text(const Candidate& c) {
