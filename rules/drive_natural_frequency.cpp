@@ -70,7 +70,7 @@ class DriveNaturalFrequency final : public Rule {
     const physics::SimulationRate& rate = driven.rate;
     const double bound = rate.frequency_bound();
     const double nf = physics::natural_frequency(driven.stiffness, least);
-    const double needed = driven.stiffness / (bound * bound);
+    const double needed = physics::inertia_for_frequency(driven.stiffness, bound);
     const std::vector<std::string>& massless = lower.assumed_massless();
     Diagnostic& d = out.report(at, Severity::Info,
                                fmt::format("drive of {}: natural frequency not judged, {} link{} without mass", short_name(joint),
@@ -93,7 +93,7 @@ class DriveNaturalFrequency final : public Rule {
     const Joint& joint = *driven.joint;
     const physics::SimulationRate& rate = driven.rate;
     const double bound = rate.frequency_bound();
-    const double needed = driven.stiffness / (bound * bound);
+    const double needed = physics::inertia_for_frequency(driven.stiffness, bound);
     Diagnostic& d = out.report(at, Severity::Info,
                                fmt::format("drive of {}: natural frequency not judged, the articulation's mass is unknown",
                                            short_name(joint)));
@@ -215,7 +215,7 @@ class DriveNaturalFrequency final : public Rule {
       if (nf_force > bound) {
         // A softer spring would lose the max force at the target delta: the guide's other
         // levers are armature and the step.
-        const double armature = k_force / (bound * bound) - inertia;
+        const double armature = physics::inertia_for_frequency(k_force, bound) - inertia;
         d.note(fmt::format("Even the guide's stiffness, max force {} / {}° target delta = {}, gives {} rad/s: add "
                            "armature ≥ {} {} or shorten h ({}) to ≤ {} s.",
                            describe(*force), format_number(settings.gripper.target_delta_deg.value),

@@ -17,6 +17,7 @@ double damping_for_ratio(double ratio, double stiffness, double inertia) {
   return 2.0 * ratio * std::sqrt(stiffness * inertia);
 }
 double stiffness_for_frequency(double frequency, double inertia) { return inertia * frequency * frequency; }
+double inertia_for_frequency(double stiffness, double frequency) { return stiffness / (frequency * frequency); }
 
 std::vector<const Joint*> coupled_joints(const Asset& asset, const Joint& joint) {
   const Joint* driver = &joint;

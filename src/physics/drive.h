@@ -14,6 +14,7 @@ double natural_frequency(double stiffness, double inertia);              // sqrt
 double damping_ratio(double damping, double stiffness, double inertia);  // d / (2·sqrt(k·I))
 double damping_for_ratio(double ratio, double stiffness, double inertia);  // 2·dr·sqrt(k·I)
 double stiffness_for_frequency(double frequency, double inertia);        // I·nf²
+double inertia_for_frequency(double stiffness, double frequency);        // k / nf²: the least I that keeps nf
 
 // The joints that move together: a driven joint and every mimic that follows it
 // (for a mimic joint: the joint it follows and that joint's mimics).
