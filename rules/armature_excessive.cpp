@@ -33,6 +33,7 @@ class ArmatureExcessive final : public Rule {
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
     const double factor = rule_option(info_, settings, "max_ratio");
     const double flywheel = rule_option(info_, settings, "flywheel_ratio");
+    const double max_time_constant = rule_option(info_, settings, "max_time_constant");
     const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || !joint.armature || joint.armature->value <= 0) continue;
@@ -46,6 +47,8 @@ class ArmatureExcessive final : public Rule {
       if (ratio <= factor) continue;
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
       Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, model.spring_drive(joint)};
+      c.damping = damping_on(asset, joint, c.driven);
+      c.max_time_constant = max_time_constant;
       if (crutch(c)) c.shared = shared_by_a_steady_drive(model, asset, joint);
       // Only on the robot's own parts: an object hung from the world (a puck, a leaf) is what
       // the task moves, and a flywheel there changes the task whatever set the value.
@@ -113,11 +116,25 @@ class ArmatureExcessive final : public Rule {
     std::optional<DrivenJoint> driven;
     const Joint* shared = nullptr;  // a steady drive with the same armature literal
     const Joint* motor_literal = nullptr;  // passive: an actuated joint whose armature is the same literal
+    double damping = 0;            // what damps the joint's speed, model units (0: none known)
+    double max_time_constant = 0;  // s
+    // How soon the joint's speed settles under its damping, armature included (0: no damping).
+    double lag() const { return damping > 0 ? physics::inertial_time_constant(armature + moved.value, damping) : 0; }
+    // The damper, not the armature, sets how the joint moves on anything slower than the lag.
+    bool settled_by_damping() const { return damping > 0 && lag() <= max_time_constant; }
     const char* unit() const { return is_angular(joint.type) ? "kg·m²" : "kg"; }
     // Far above everything the joint moves: the drive turns a flywheel.
     // Not when part of the load is left out: the ratio then overstates the armature's share.
     bool dwarfs() const { return !moved.lighter && !moved.partial && ratio > flywheel; }
   };
+
+  // The damping that acts on the joint's speed: its drive's (MuJoCo: kv·G² plus the joint's own
+  // damping), or on an MJCF joint no servo drives (a tendon's, a passive one), its own damping.
+  static double damping_on(const Asset& asset, const Joint& joint, const std::optional<DrivenJoint>& driven) {
+    if (driven) return driven->damping_known() ? driven->damping : 0;
+    if (asset.format == SourceFormat::Mjcf && joint.joint_damping) return joint.joint_damping->value;
+    return 0;
+  }
 
   struct Crutch {
     double natural_frequency;  // rad/s, without the armature
@@ -249,6 +266,22 @@ class ArmatureExcessive final : public Rule {
                            "this joint. Declare the motor to record that; the drive then depends on it only as the "
                            "real joint does.",
                            joint_label(*c.shared)));
+      drive_effect(c, d);
+      return;
+    }
+    if (c.dwarfs() && c.settled_by_damping()) {
+      Diagnostic& d = out.report(at, Severity::Info,
+                                 fmt::format("armature {} of {} is {}× everything the joint moves, but its damping "
+                                             "settles it within {} s",
+                                             amount, short_name(joint), times, format_number(c.lag(), 2)));
+      d.note(moved_text(c));
+      d.note(fmt::format("With damping d = {} {}, the joint's speed settles in (armature + load) / d = {} s, within "
+                         "max_time_constant = {} s: on any slower motion the joint moves as its damper lets it, and "
+                         "the armature adds only that lag (without it, {} s). It is still far above a rotor reflected "
+                         "onto this load: confirm it against the motor datasheet, or keep it as the steadier it is.",
+                         format_number(c.damping, 4), unit_symbol(damping_unit(joint)), format_number(c.lag(), 3),
+                         format_number(c.max_time_constant),
+                         format_number(physics::inertial_time_constant(c.moved.value, c.damping), 3)));
       drive_effect(c, d);
       return;
     }
@@ -413,7 +446,10 @@ class ArmatureExcessive final : public Rule {
                    "report armature above this multiple of what the joint moves about its axis (the lighter link for a "
                    "mimic-coupled gripper drive)"},
                   {"flywheel_ratio", 10000.0,
-                   "warn when the armature is above this multiple of everything the joint moves (a flywheel)"}}};
+                   "warn when the armature is above this multiple of everything the joint moves (a flywheel)"},
+                  {"max_time_constant", 0.2,
+                   "no flywheel when the joint's damping settles its speed, armature included, within this many "
+                   "seconds"}}};
 };
 
 }  // namespace

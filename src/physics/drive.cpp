@@ -18,6 +18,7 @@ double damping_for_ratio(double ratio, double stiffness, double inertia) {
 }
 double stiffness_for_frequency(double frequency, double inertia) { return inertia * frequency * frequency; }
 double inertia_for_frequency(double stiffness, double frequency) { return stiffness / (frequency * frequency); }
+double inertial_time_constant(double inertia, double damping) { return inertia / damping; }
 
 std::vector<const Joint*> coupled_joints(const Asset& asset, const Joint& joint) {
   const Joint* driver = &joint;

@@ -15,6 +15,7 @@ double damping_ratio(double damping, double stiffness, double inertia);  // d / 
 double damping_for_ratio(double ratio, double stiffness, double inertia);  // 2·dr·sqrt(k·I)
 double stiffness_for_frequency(double frequency, double inertia);        // I·nf²
 double inertia_for_frequency(double stiffness, double frequency);        // k / nf²: the least I that keeps nf
+double inertial_time_constant(double inertia, double damping);          // I / d, s: how soon a damped joint's speed settles
 
 // The joints that move together: a driven joint and every mimic that follows it
 // (for a mimic joint: the joint it follows and that joint's mimics).
