@@ -73,33 +73,8 @@ class DriveMaxForce final : public Rule {
     const SharedValues* efforts;
     const ZeroEfforts* zero_efforts;
     const char* what() const { return usd ? "maxForce" : "effort"; }
-    // The joint a gripper's mimic joints follow: its effort is the grip. A mechanism whose
-    // coupled links carry wheels (a rover's rocker differential, whose other rocker and
-    // averaging bar mimic one side) is a suspension, not a gripper.
-    bool gripper_driver() const {
-      const std::vector<const Joint*> followers = asset.mimic_followers(joint.name.text);
-      if (followers.empty()) return false;
-      return !carries_wheel(joint) && std::none_of(followers.begin(), followers.end(), [&](const Joint* f) { return carries_wheel(*f); });
-    }
-    // Whether a wheel (a continuous joint no mimic ties) hangs below the joint's child link.
-    bool carries_wheel(const Joint& from) const {
-      std::vector<const Link*> pending{asset.side_link(from, 1)};
-      std::vector<const Link*> seen;
-      while (!pending.empty()) {
-        const Link* link = pending.back();
-        pending.pop_back();
-        if (!link || std::find(seen.begin(), seen.end(), link) != seen.end()) continue;
-        seen.push_back(link);
-        for (const Joint* next : asset.joints_at(link->name.text)) {
-          if (next->parent.text != link->name.text) continue;
-          // A wheel turns on its own; a gripper's continuous knuckles are mimics.
-          if (next->type == JointType::Continuous && !next->is_mimic() && asset.mimic_followers(next->name.text).empty())
-            return true;
-          pending.push_back(asset.side_link(*next, 1));
-        }
-      }
-      return false;
-    }
+    // The joint a gripper's mimic joints follow: its effort is the grip.
+    bool gripper_driver() const { return physics::drives_gripper(asset, joint); }
   };
 
   void unbounded(const Context& c) const {

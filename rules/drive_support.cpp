@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/gripper.h"
 #include "physics/inertia.h"
 #include "rules/support.h"
 #include "util/numbers.h"
@@ -12,7 +13,8 @@
 namespace assetlint::rules {
 
 DriveModel::DriveModel(const Asset& asset, const Settings& settings)
-    : asset_(asset), settings_(settings), articulation_(physics::shared_articulation(asset)), rate_(physics::effective_simulation(asset, settings)) {}
+    : asset_(asset), settings_(settings), articulation_(physics::shared_articulation(asset)), rate_(physics::effective_simulation(asset, settings)),
+      gyration_scale_(physics::gyration_scale(asset)) {}
 
 std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   if (!is_single_dof(joint.type) || joint.is_mimic() || !joint.drive) return std::nullopt;
@@ -34,7 +36,8 @@ std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   }
   d.inertia_used = d.judged.value;
   if (drive.type != DriveType::Acceleration && d.inertia.known && d.inertia.link)
-    d.inertia_doubt = physics::inertia_doubt(asset_, *d.inertia.link, articulation_->sole_rotation_axis(*d.inertia.link));
+    d.inertia_doubt = physics::inertia_doubt(asset_, *d.inertia.link, articulation_->sole_rotation_axis(*d.inertia.link),
+                                            gyration_scale_);
   d.rate = rate_;
   return d;
 }
@@ -44,9 +47,7 @@ bool guide_applies(const Asset& asset, const Settings& settings, const Joint& jo
   if (settings.gripper.driven_joint &&
       (settings.gripper.driven_joint->value == joint.name.text || settings.gripper.driven_joint->value == short_path(joint.name.text)))
     return true;
-  for (const Joint* follower : asset.mimic_followers(joint.name.text))
-    if (follower != &joint) return true;
-  return false;
+  return physics::drives_gripper(asset, joint);
 }
 
 JudgedInertia DriveModel::judged_inertia(const Joint& joint) const {

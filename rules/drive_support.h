@@ -38,7 +38,7 @@ struct JudgedInertia {
   std::string why_unknown() const;  // "no mass authored on 'a', 'b'" / the reason
 };
 
-// True where the guide's lighter-link figure applies: a drive with mimic joints following it,
+// True where the guide's lighter-link figure applies: a gripper's drive (physics::drives_gripper),
 // or the configured [gripper] driven_joint.
 bool guide_applies(const Asset& asset, const Settings& settings, const Joint& joint);
 
@@ -92,6 +92,7 @@ class DriveModel {
   const Settings& settings_;
   std::shared_ptr<const physics::Articulation> articulation_;
   physics::SimulationRate rate_;
+  double gyration_scale_;  // physics::gyration_scale, for the lighter link's doubt
 };
 
 // The drive as MuJoCo steps it, on `inertia`: the reader folds the joint's own damping into

@@ -132,6 +132,7 @@ class InertiaInvalid final : public Rule {
     };
     std::vector<Found> found;
     const auto articulation = physics::shared_articulation(asset);
+    const double scale = physics::gyration_scale(asset);
     std::vector<bool> reported(asset.links.size(), false);
     for (const Link* link : already)
       if (const auto i = asset.index_of(*link)) reported[*i] = true;
@@ -142,7 +143,7 @@ class InertiaInvalid final : public Rule {
       if (physics::pasted_tensor(link.inertial->inertia) || reported[i] || point_mass(*link.inertial))
         continue;
       const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link),
-                                             articulation->sole_rotation_axis(link));
+                                             articulation->sole_rotation_axis(link), scale);
       if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
       const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;
       found.push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest});

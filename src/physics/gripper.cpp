@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "physics/drive.h"
@@ -9,6 +10,37 @@
 #include "util/numbers.h"
 
 namespace assetlint::physics {
+
+namespace {
+
+// Whether a joint that moves on its own (single degree of freedom, no mimic) hangs below
+// `from`'s child link.
+bool moves_on_its_own_below(const Asset& asset, const Joint& from) {
+  std::vector<const Link*> pending{asset.side_link(from, 1)};
+  std::vector<const Link*> seen;
+  while (!pending.empty()) {
+    const Link* link = pending.back();
+    pending.pop_back();
+    if (!link || std::find(seen.begin(), seen.end(), link) != seen.end()) continue;
+    seen.push_back(link);
+    for (const Joint* next : asset.joints_at(link->name.text)) {
+      if (next->parent.text != link->name.text) continue;
+      if (is_single_dof(next->type) && !next->is_mimic()) return true;
+      pending.push_back(asset.side_link(*next, 1));
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool drives_gripper(const Asset& asset, const Joint& joint) {
+  const std::vector<const Joint*> followers = asset.mimic_followers(joint.name.text);
+  if (std::none_of(followers.begin(), followers.end(), [&](const Joint* f) { return f != &joint; })) return false;
+  if (moves_on_its_own_below(asset, joint)) return false;
+  return std::none_of(followers.begin(), followers.end(),
+                      [&](const Joint* f) { return moves_on_its_own_below(asset, *f); });
+}
 
 const Joint* spec_joint(const Asset& asset, const Settings& settings) {
   if (settings.gripper.driven_joint) return asset.find_joint(settings.gripper.driven_joint->value);

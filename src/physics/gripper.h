@@ -13,6 +13,12 @@ namespace assetlint::physics {
 // asset's only driven joint (non-mimic, single degree of freedom, not fixed).
 const Joint* spec_joint(const Asset& asset, const Settings& settings);
 
+// Whether `joint` drives a gripper: mimic joints follow it, and nothing below it or below its
+// followers moves on its own. A movable joint there that is no mimic makes the coupling
+// something else: the wheels under a rover's rocker differential (the other
+// rocker and the averaging bar mimic one side), the knee under a hip whose armour plates mimic it.
+bool drives_gripper(const Asset& asset, const Joint& joint);
+
 // A per-joint torque rounded up to a multiple of `[gripper] torque_margin` (N·m), as the
 // guide rounds 3.33 N·m up to 4; unchanged when the margin is unset. `tune --torque-margin`
 // sets the same key, so both go through here.

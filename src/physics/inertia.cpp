@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "model/poses.h"
 #include "util/numbers.h"
 
 namespace assetlint::physics {
@@ -41,8 +42,15 @@ std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& lin
   return frames;
 }
 
+double gyration_scale(const Asset& asset) {
+  Eigen::AlignedBox3d box;
+  for (const auto& [name, pose] : link_poses(asset)) box.extend(pose.translation());
+  if (box.isEmpty()) return 1.0;
+  return std::max(1.0, box.diagonal().norm() / kGyrationReferenceSize);
+}
+
 std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames,
-                                       const std::optional<Eigen::Vector3d>& sole_axis) {
+                                       const std::optional<Eigen::Vector3d>& sole_axis, double scale) {
   const double mass = inertial.mass.value;
   if (!inertial.mass_authored || !inertial.inertia_authored || !inertial.com_authored || !(mass > 0)) return std::nullopt;
   const Eigen::Vector3d moments = principal_moments(inertial.inertia);
@@ -58,7 +66,8 @@ std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vect
   if (joint_frames.size() >= 2)
     for (const Eigen::Vector3d& frame : joint_frames) g.spread = std::max(g.spread, (frame - inertial.com).norm());
   g.from_size = g.spread > 0;
-  g.bound = g.from_size ? std::max(kGyrationSizeFactor * g.spread, kGyrationFloor) : kGyrationFixedBound;
+  g.scale = scale;
+  g.bound = g.from_size ? std::max(kGyrationSizeFactor * g.spread, kGyrationFloor * scale) : kGyrationFixedBound * scale;
   if (g.largest > g.bound) g.verdict = Gyration::Verdict::TooLarge;
   else if (mass >= kGyrationMinMass && g.largest < kGyrationMinRadius) g.verdict = Gyration::Verdict::TooSmall;
   return g;
@@ -68,15 +77,20 @@ std::string Gyration::bound_text() const {
   if (verdict == Verdict::TooSmall)
     return fmt::format("the fixed lower bound {} m for a link of {} kg or more", format_number(kGyrationMinRadius),
                        format_number(kGyrationMinMass));
+  const std::string scaled =
+      scale > 1 ? fmt::format(", scaled ×{} for a robot {} m across", format_number(scale, 3),
+                              format_number(scale * kGyrationReferenceSize, 3))
+                : std::string();
   if (!from_size)
-    return fmt::format("the fixed bound {} m (the link has fewer than two distinct joint frames: the model gives no size)",
-                       format_number(kGyrationFixedBound));
-  return fmt::format("the bound {} m = max({} × {} m, {} m), {} m being the farthest joint frame on the link from its COM",
+    return fmt::format("the fixed bound {} m{} (the link has fewer than two distinct joint frames: the model gives no size)",
+                       format_number(kGyrationFixedBound * scale, 3), scaled);
+  return fmt::format("the bound {} m = max({} × {} m, {} m{}), {} m being the farthest joint frame on the link from its COM",
                      format_number(bound, 3), format_number(kGyrationSizeFactor), format_number(spread, 3),
-                     format_number(kGyrationFloor), format_number(spread, 3));
+                     format_number(kGyrationFloor * scale, 3), scaled, format_number(spread, 3));
 }
 
-std::string inertia_doubt(const Asset& asset, const Link& link, const std::optional<Eigen::Vector3d>& sole_axis) {
+std::string inertia_doubt(const Asset& asset, const Link& link, const std::optional<Eigen::Vector3d>& sole_axis,
+                          double scale) {
   if (!link.inertial) return {};
   const Inertial& in = *link.inertial;
   const Eigen::Matrix3d& t = in.inertia;
@@ -87,7 +101,7 @@ std::string inertia_doubt(const Asset& asset, const Link& link, const std::optio
       t(2, 2) == in.mass.value)
     return fmt::format("link '{}' has mass and moments all {}: placeholder values", link.name.text,
                        format_number(in.mass.value, 4));
-  const auto g = judge_gyration(in, joint_frames_on(asset, link), sole_axis);
+  const auto g = judge_gyration(in, joint_frames_on(asset, link), sole_axis, scale);
   if (!g || g->verdict == Gyration::Verdict::Plausible) return {};
   if (g->verdict == Gyration::Verdict::TooSmall)
     return fmt::format("link '{}' has a radius of gyration √(I/m) of {} m, below {} m: a point mass typed in",

@@ -38,6 +38,14 @@ inline constexpr double kGyrationFloor = 0.1;        // m
 inline constexpr double kGyrationFixedBound = 0.5;   // m
 inline constexpr double kGyrationMinRadius = 0.002;  // m
 inline constexpr double kGyrationMinMass = 0.01;     // kg
+// The floor and the fixed bound are for robots up to this size across (m): a larger one's parts
+// may be proportionally larger (a mecha 18 m tall has elbow pieces of 0.4 m in gyration).
+inline constexpr double kGyrationReferenceSize = 2.0;
+
+// The asset's size across (the diagonal of the box around its links at the zero
+// configuration) over kGyrationReferenceSize, and never below 1: what the floor and the fixed
+// bound of judge_gyration scale by.
+double gyration_scale(const Asset& asset);
 
 struct Gyration {
   enum class Verdict { Plausible, TooLarge, TooSmall };
@@ -48,6 +56,7 @@ struct Gyration {
   double bound = 0;     // the largest plausible radius, m
   bool from_size = false;  // bound = max(factor × spread, floor); else the fixed bound
   bool about_axis = false;  // `largest` is about the one axis the link turns about
+  double scale = 1;         // gyration_scale of the asset
   std::string bound_text() const;  // "3 × 0.114 m, the farthest joint frame on the link from its COM" / …
 };
 
@@ -59,10 +68,11 @@ std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& lin
 // is judged: the other two never enter the dynamics, and identified parameter sets leave them
 // arbitrary (Franka's Panda link1: 0.70 kg·m² across a 0.33 m link, 0.009 about its axis).
 std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames,
-                                       const std::optional<Eigen::Vector3d>& sole_axis = std::nullopt);
+                                       const std::optional<Eigen::Vector3d>& sole_axis, double scale);
 
 // Why the guide's formulas cannot trust a link's tensor, or empty: a pasted placeholder (all
 // six entries equal, or mass equal to each moment) or a radius of gyration that does not fit.
-std::string inertia_doubt(const Asset& asset, const Link& link, const std::optional<Eigen::Vector3d>& sole_axis);
+std::string inertia_doubt(const Asset& asset, const Link& link, const std::optional<Eigen::Vector3d>& sole_axis,
+                          double scale);
 
 }  // namespace assetlint::physics
