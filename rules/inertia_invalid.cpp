@@ -66,8 +66,9 @@ class InertiaInvalid final : public Rule {
     }
     if (urdf) check_bodies(asset, bodies, out);
     const auto where = placements(asset, bodies);
+    const auto articulation = physics::shared_articulation(asset);
     for (std::size_t i = 0; i < asset.links.size(); ++i)
-      if (!from_geometry(asset.links[i])) check_link(asset.links[i], where[i], settings, out);
+      if (!from_geometry(asset.links[i])) check_link(asset.links[i], where[i], *articulation, settings, out);
     const auto equal = report_mass_equals_inertia(asset, out);
     report_gyration(asset, where, equal, out);
   }
@@ -287,7 +288,8 @@ class InertiaInvalid final : public Rule {
     }
   }
 
-  void check_link(const Link& link, const Placement& placement, const Settings& settings, Reporter& out) const {
+  void check_link(const Link& link, const Placement& placement, const physics::Articulation& articulation,
+                  const Settings& settings, Reporter& out) const {
     if (!link.inertial || !link.inertial->mass_authored) return;
     const Inertial& inertial = *link.inertial;
     const double mass = inertial.mass.value;
@@ -304,7 +306,8 @@ class InertiaInvalid final : public Rule {
     if (point_mass(inertial)) {
       // A point mass: welded to another body it only adds m·d² to that body (PhysX and the
       // URDF importers merge welded links), so only a body of its own is a problem.
-      if (placement.role == Role::BodyStart && !placement.welded_inertia) report_point_mass(link, placement, out);
+      if (placement.role == Role::BodyStart && !placement.welded_inertia)
+        report_point_mass(link, placement, articulation.translates_only(link), out);
       return;
     }
     const double relative = rule_option(info_, settings, "definiteness_tolerance");
@@ -343,8 +346,21 @@ class InertiaInvalid final : public Rule {
     }
   }
 
-  static void report_point_mass(const Link& link, const Placement& placement, Reporter& out) {
+  static void report_point_mass(const Link& link, const Placement& placement, bool translates_only, Reporter& out) {
     const Inertial& inertial = *link.inertial;
+    if (translates_only) {
+      out.report(inertial.inertia_span, Severity::Info,
+                 fmt::format("link '{}' has mass {} kg and a zero inertia tensor, but it only slides",
+                             link.name.text, format_number(inertial.mass.value)))
+          .note(placement.joint->name.span,
+                fmt::format("It is the child of {}, and every joint between it and the fixed base is prismatic (a "
+                            "virtual base's slides): it never turns, so its rotational inertia never enters the "
+                            "dynamics, and PhysX's reading of a zero moment as infinite inertia locks nothing that "
+                            "could move. Only its mass is simulated.",
+                            joint_label(*placement.joint)))
+          .note("If the base is meant to float, give the link a tensor: a floating chain turns as a whole.");
+      return;
+    }
     out.report(inertial.inertia_span, Severity::Warning,
                fmt::format("link '{}' moves with mass {} kg but a zero inertia tensor", link.name.text,
                            format_number(inertial.mass.value)))

@@ -441,6 +441,20 @@ std::optional<Eigen::Vector3d> Articulation::sole_rotation_axis(const Link& link
   return Eigen::Vector3d(into.motion.head<3>());
 }
 
+bool Articulation::translates_only(const Link& link) const {
+  const int body = body_index(&link);
+  if (body < 0) return false;
+  auto b = static_cast<std::size_t>(body);
+  if (bodies_[b].world || bodies_[b].links.empty() || bodies_[b].links.front() != &link) return false;
+  while (!bodies_[b].world) {
+    if (joint_into_[b] < 0) return false;  // a floating root turns
+    const TreeJoint& into = tree_[static_cast<std::size_t>(joint_into_[b])];
+    if (into.joint->type != JointType::Prismatic) return false;
+    b = static_cast<std::size_t>(into.parent);
+  }
+  return true;
+}
+
 ArticulatedInertia Articulation::inertia(const Joint& joint) const {
   const auto i = asset_->index_of(joint);
   if (i && *i < tree_of_joint_.size() && tree_of_joint_[*i] >= 0)

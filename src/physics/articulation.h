@@ -98,6 +98,10 @@ class Articulation {
   // first link of a body whose one joint is revolute or continuous to a body welded to the
   // world (an arm's first link). Only its moment about that axis enters the dynamics.
   std::optional<Eigen::Vector3d> sole_rotation_axis(const Link& link) const;
+  // Whether the body a link starts never turns: every joint between it and a body welded to
+  // the world is prismatic (a virtual base's x, y and z slides). Its rotational inertia then
+  // never enters the dynamics; only its mass does.
+  bool translates_only(const Link& link) const;
 
  private:
   void build(const Asset& asset, FreeRoot free_root, MissingMass missing);
