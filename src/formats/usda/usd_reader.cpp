@@ -94,7 +94,7 @@ class Reader {
         if (!scene.position_iterations)
           scene.position_iterations = positive_setting(prim, "physxArticulation:solverPositionIterationCount", Unit::None);
         if (!scene.velocity_iterations)
-          scene.velocity_iterations = positive_setting(prim, "physxArticulation:solverVelocityIterationCount", Unit::None);
+          scene.velocity_iterations = velocity_iteration_setting(prim, "physxArticulation:solverVelocityIterationCount");
       }
     }
     read_colliders(stage_, on_stage, mpu_, result_.asset);
@@ -177,6 +177,18 @@ class Reader {
            fmt::format("{} = {} is not a positive number; asset-lint ignores it", name, format_number(q->authored)),
            {"PhysX needs a positive rate and positive iteration counts; the configuration's value or PhysX's default "
             "is used instead."});
+    return std::nullopt;
+  }
+
+  // The velocity iteration count may be 0: PhysX checks only that the position count is above
+  // zero (NpArticulationReducedCoordinate::setSolverIterationCounts), and Isaac Lab's robot
+  // configurations often run articulations with no velocity iterations.
+  OptQuantity velocity_iteration_setting(const ComposedPrim& prim, std::string_view name) {
+    OptQuantity q = number(prim, name, Unit::None);
+    if (!q || (std::isfinite(q->authored) && q->authored >= 0)) return q;
+    report(rules::kParseError, q->span,
+           fmt::format("{} = {} is not a count of zero or more; asset-lint ignores it", name, format_number(q->authored)),
+           {"PhysX takes 0 to 255 velocity iterations; the configuration's value or PhysX's default is used instead."});
     return std::nullopt;
   }
 
