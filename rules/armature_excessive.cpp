@@ -261,10 +261,10 @@ class ArmatureExcessive final : public Rule {
                "damped stably without the armature.");
       if (c.shared)
         d.note(c.joint.armature->span,
-               fmt::format("This armature is one literal shared with {}, whose drive is steady without it: a value "
-                           "set once for a motor type, its reflected rotor inertia, rather than a lever tuned for "
-                           "this joint. Declare the motor to record that; the drive then depends on it only as the "
-                           "real joint does.",
+               fmt::format("This armature is {} {}, whose drive is steady without it: a value set for a motor type, "
+                           "its reflected rotor inertia, rather than a lever tuned for this joint. Declare the motor "
+                           "to record that; the drive then depends on it only as the real joint does.",
+                           same_literal(c.joint, *c.shared) ? "one literal shared with" : "the same value as",
                            joint_label(*c.shared)));
       drive_effect(c, d);
       return;
@@ -359,28 +359,38 @@ class ArmatureExcessive final : public Rule {
   }
 
   // The first other joint whose armature is the same literal as this one's (one default class,
-  // one servo type) and that `accept` takes.
+  // one servo type), or with `or_same_value` the same number written again in the same file,
+  // and that `accept` takes.
   template <class Accept>
-  static const Joint* sharing_armature_literal(const Asset& asset, const Joint& joint, Accept accept) {
+  static const Joint* sharing_armature_literal(const Asset& asset, const Joint& joint, bool or_same_value,
+                                               Accept accept) {
     const Span& literal = joint.armature->span;
     if (!literal.valid()) return nullptr;
     for (const Joint& other : asset.joints) {
       if (&other == &joint || !other.armature) continue;
       const Span& at = other.armature->span;
-      if (at.file == literal.file && at.offset == literal.offset && accept(other)) return &other;
+      const bool same_literal = at.file == literal.file && at.offset == literal.offset;
+      const bool same_value = or_same_value && at.file == literal.file && other.armature->value == joint.armature->value;
+      if ((same_literal || same_value) && accept(other)) return &other;
     }
     return nullptr;
   }
 
-  static const Joint* actuated_sharing_literal(const Asset& asset, const Joint& joint) {
-    return sharing_armature_literal(asset, joint, [](const Joint& other) { return other.actuation == Actuation::Actuated; });
+  static bool same_literal(const Joint& a, const Joint& b) {
+    return a.armature->span.file == b.armature->span.file && a.armature->span.offset == b.armature->span.offset;
   }
 
-  // Another actuated joint that takes its armature from the same literal and whose drive is
-  // steady without it: the value is the motor's, set once for every joint it turns, not a
-  // lever tuned for this joint's stability.
+  static const Joint* actuated_sharing_literal(const Asset& asset, const Joint& joint) {
+    return sharing_armature_literal(asset, joint, false,
+                                    [](const Joint& other) { return other.actuation == Actuation::Actuated; });
+  }
+
+  // Another actuated joint that takes its armature from the same literal, or writes the same
+  // value again, and whose drive is steady without it: the value is the motor's, set for every
+  // joint it turns, not a lever tuned for this joint's stability. Whether the model says so
+  // once in a class or on every joint is a matter of style.
   static const Joint* shared_by_a_steady_drive(const DriveModel& model, const Asset& asset, const Joint& joint) {
-    return sharing_armature_literal(asset, joint, [&](const Joint& other) {
+    return sharing_armature_literal(asset, joint, true, [&](const Joint& other) {
       if (other.actuation == Actuation::Passive || other.actuation == Actuation::Linkage) return false;
       const std::optional<DrivenJoint> driven = model.spring_drive(other);
       return driven && !driven->acceleration() && driven->judged.known &&
