@@ -385,18 +385,27 @@ class ArmatureExcessive final : public Rule {
                                     [](const Joint& other) { return other.actuation == Actuation::Actuated; });
   }
 
-  // Another actuated joint that takes its armature from the same literal, or writes the same
-  // value again, and whose drive is steady without it: the value is the motor's, set for every
-  // joint it turns, not a lever tuned for this joint's stability. Whether the model says so
-  // once in a class or on every joint is a matter of style.
+  // Another actuated joint whose drive is steady without the armature and that takes it from
+  // the same literal, or writes the same value again behind the same drive gains: the value is
+  // the motor's, set for every joint that servo turns, not a lever tuned for this joint's
+  // stability. Whether a model says so once in a class or on every joint is a matter of style;
+  // an equal value behind other gains (another class, another motor) says nothing.
   static const Joint* shared_by_a_steady_drive(const DriveModel& model, const Asset& asset, const Joint& joint) {
+    const std::optional<DrivenJoint> own = model.spring_drive(joint);
     return sharing_armature_literal(asset, joint, true, [&](const Joint& other) {
       if (other.actuation == Actuation::Passive || other.actuation == Actuation::Linkage) return false;
       const std::optional<DrivenJoint> driven = model.spring_drive(other);
-      return driven && !driven->acceleration() && driven->judged.known &&
-             (driven->rate.solver != physics::Solver::MuJoCo || driven->damping_known()) &&
-             !crutch(driven, other.armature->value);
+      if (!driven || driven->acceleration() || !driven->judged.known ||
+          (driven->rate.solver == physics::Solver::MuJoCo && !driven->damping_known()) ||
+          crutch(driven, other.armature->value))
+        return false;
+      return same_literal(joint, other) || (own && same_gains(*own, *driven));
     });
+  }
+
+  static bool same_gains(const DrivenJoint& a, const DrivenJoint& b) {
+    const auto equal = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y)); };
+    return equal(a.stiffness, b.stiffness) && equal(a.damping, b.damping);
   }
 
   static std::string moved_text(const Candidate& c) {
