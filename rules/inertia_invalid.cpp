@@ -144,7 +144,8 @@ class InertiaInvalid final : public Rule {
       if (physics::pasted_tensor(link.inertial->inertia) || reported[i] || point_mass(*link.inertial))
         continue;
       const auto g = physics::judge_gyration(*link.inertial, physics::joint_frames_on(asset, link),
-                                             articulation->sole_rotation_axis(link), scale);
+                                             articulation->sole_rotation_axis(link), scale,
+                                             physics::collision_reach(link, link.inertial->com));
       if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
       const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;
       found.push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest});

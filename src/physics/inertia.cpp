@@ -42,6 +42,25 @@ std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& lin
   return frames;
 }
 
+double collision_reach(const Link& link, const Eigen::Vector3d& com) {
+  double reach = 0;
+  for (const CollisionShape& shape : link.collisions) {
+    const Eigen::Vector3d centre = shape.pose.translation();
+    double radius = 0;
+    switch (shape.kind) {
+      case CollisionShape::Kind::Box: radius = 0.5 * shape.size.norm(); break;
+      case CollisionShape::Kind::Cylinder: radius = std::hypot(shape.size[0], 0.5 * shape.size[1]); break;
+      case CollisionShape::Kind::Sphere: radius = shape.size[0]; break;
+      case CollisionShape::Kind::Capsule: radius = shape.size[0] + 0.5 * shape.size[1]; break;
+      case CollisionShape::Kind::Mesh:
+        for (const Eigen::Vector3d& p : shape.points) reach = std::max(reach, (shape.pose * p - com).norm());
+        continue;
+    }
+    if (std::isfinite(radius) && radius > 0) reach = std::max(reach, (centre - com).norm() + radius);
+  }
+  return reach;
+}
+
 double gyration_scale(const Asset& asset) {
   Eigen::AlignedBox3d box;
   for (const auto& [name, pose] : link_poses(asset)) box.extend(pose.translation());
@@ -50,7 +69,8 @@ double gyration_scale(const Asset& asset) {
 }
 
 std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames,
-                                       const std::optional<Eigen::Vector3d>& sole_axis, double scale) {
+                                       const std::optional<Eigen::Vector3d>& sole_axis, double scale,
+                                       double shape_reach) {
   const double mass = inertial.mass.value;
   if (!inertial.mass_authored || !inertial.inertia_authored || !inertial.com_authored || !(mass > 0)) return std::nullopt;
   const Eigen::Vector3d moments = principal_moments(inertial.inertia);
@@ -68,6 +88,11 @@ std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vect
   g.from_size = g.spread > 0;
   g.scale = scale;
   g.bound = g.from_size ? std::max(kGyrationSizeFactor * g.spread, kGyrationFloor * scale) : kGyrationFixedBound * scale;
+  g.shape_reach = shape_reach;
+  if (std::isfinite(shape_reach) && shape_reach > g.bound) {
+    g.bound = shape_reach;
+    g.from_shapes = true;
+  }
   if (g.largest > g.bound) g.verdict = Gyration::Verdict::TooLarge;
   else if (mass >= kGyrationMinMass && g.largest < kGyrationMinRadius) g.verdict = Gyration::Verdict::TooSmall;
   return g;
@@ -77,6 +102,8 @@ std::string Gyration::bound_text() const {
   if (verdict == Verdict::TooSmall)
     return fmt::format("the fixed lower bound {} m for a link of {} kg or more", format_number(kGyrationMinRadius),
                        format_number(kGyrationMinMass));
+  if (from_shapes)
+    return fmt::format("the bound {} m, how far the link's collision shapes reach from its COM", format_number(bound, 3));
   const std::string scaled =
       scale > 1 ? fmt::format(", scaled ×{} for a robot {} m across", format_number(scale, 3),
                               format_number(scale * kGyrationReferenceSize, 3))
@@ -101,7 +128,7 @@ std::string inertia_doubt(const Asset& asset, const Link& link, const std::optio
       t(2, 2) == in.mass.value)
     return fmt::format("link '{}' has mass and moments all {}: placeholder values", link.name.text,
                        format_number(in.mass.value, 4));
-  const auto g = judge_gyration(in, joint_frames_on(asset, link), sole_axis, scale);
+  const auto g = judge_gyration(in, joint_frames_on(asset, link), sole_axis, scale, collision_reach(link, in.com));
   if (!g || g->verdict == Gyration::Verdict::Plausible) return {};
   if (g->verdict == Gyration::Verdict::TooSmall)
     return fmt::format("link '{}' has a radius of gyration √(I/m) of {} m, below {} m: a point mass typed in",

@@ -57,18 +57,29 @@ struct Gyration {
   bool from_size = false;  // bound = max(factor × spread, floor); else the fixed bound
   bool about_axis = false;  // `largest` is about the one axis the link turns about
   double scale = 1;         // gyration_scale of the asset
+  double shape_reach = 0;   // how far the link's collision shapes reach from its COM, m (0: none known)
+  bool from_shapes = false;  // the shapes' reach, larger than the other bounds, is the bound
   std::string bound_text() const;  // "3 × 0.114 m, the farthest joint frame on the link from its COM" / …
 };
 
 // The joint frames on a link, in the link frame: where it is a joint's parent or child.
 std::vector<Eigen::Vector3d> joint_frames_on(const Asset& asset, const Link& link);
 
+// How far the link's collision shapes reach from `com` (link frame), m: for each primitive its
+// centre's distance plus the radius of the sphere around it, for a mesh written inline its
+// farthest vertex; 0 when the link has no shape whose size the file gives (mesh files).
+// The link is at least that large, so its radius of gyration may be that large too.
+double collision_reach(const Link& link, const Eigen::Vector3d& com);
+
 // Needs an authored, positive-definite tensor, a positive mass and an authored COM. With
 // `sole_axis` (a link that only turns about that axis, in its frame) only the moment about it
 // is judged: the other two never enter the dynamics, and identified parameter sets leave them
 // arbitrary (Franka's Panda link1: 0.70 kg·m² across a 0.33 m link, 0.009 about its axis).
+// `shape_reach` (collision_reach, 0 when unknown) raises the bound: a link is at least as large
+// as its collision shapes.
 std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames,
-                                       const std::optional<Eigen::Vector3d>& sole_axis, double scale);
+                                       const std::optional<Eigen::Vector3d>& sole_axis, double scale,
+                                       double shape_reach);
 
 // Why the guide's formulas cannot trust a link's tensor, or empty: a pasted placeholder (all
 // six entries equal, or mass equal to each moment) or a radius of gyration that does not fit.
