@@ -38,14 +38,15 @@ class MassRatio final : public Rule {
     const auto judged = [&](const physics::Body* body) {
       return body && !body->world && body->mass_known && body->mass > 0 && (!fixed_root || moved.count(body));
     };
-    // MuJoCo simulates a tree in joint coordinates: a light body between two joints (the
+    // MuJoCo simulates a tree in joint coordinates, and Isaac Sim imports a URDF as a PhysX
+    // articulation, which does too (reduced coordinates): a light body between two joints (the
     // virtual link of a two-axis joint) is moved, contacts and all, only through the joints
     // above it, whose inertia holds everything beyond it too; its own mass changes nothing.
     std::set<const physics::Body*> carries_joint;
     for (const Joint& joint : asset.joints)
       if (is_single_dof(joint.type)) carries_joint.insert(articulation.side(joint, 0));
     const auto virtual_link = [&](const physics::Body* body) {
-      return asset.format == SourceFormat::Mjcf && carries_joint.count(body) > 0;
+      return (asset.format == SourceFormat::Mjcf || asset.format == SourceFormat::Urdf) && carries_joint.count(body) > 0;
     };
     std::vector<Pair> found;
     for (const Joint& joint : asset.joints) {
