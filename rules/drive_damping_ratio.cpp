@@ -1,5 +1,7 @@
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "physics/servo_step.h"
 #include "rules/all_rules.h"
 #include "rules/drive_support.h"
@@ -13,6 +15,12 @@ namespace {
 // point. Far below it the joint rings; far above it the joint crawls. I is the drive's judged
 // inertia (drive_support.h), the same one drive-natural-frequency uses.
 class DriveDampingRatio final : public Rule {
+  // Continuous, or revolute with no finite bound on either side (USD writes ±inf).
+  static bool turns_without_limits(const Joint& joint) {
+    if (joint.type == JointType::Continuous) return true;
+    return !(joint.lower && joint.upper && std::isfinite(joint.lower->value) && std::isfinite(joint.upper->value));
+  }
+
  public:
   const RuleInfo& info() const override { return info_; }
 
@@ -46,6 +54,10 @@ class DriveDampingRatio final : public Rule {
       const double time_constant =
           1.0 / physics::slowest_decay_rate(physics::Servo{inertia, driven->stiffness, 0.0, driven->damping});
       const bool follows_quickly = !below && !steadies_stiff_spring && !load_left_out && time_constant <= max_time_constant;
+      // A joint that turns without limits (a wheel) with damping far above critical is driven by
+      // velocity: the small stiffness only nudges it, and nobody asks it to reach a position.
+      const bool velocity_driven = !below && !steadies_stiff_spring && !load_left_out && !follows_quickly &&
+                                   is_angular(joint.type) && turns_without_limits(joint);
       // MuJoCo's frictionloss is dry friction: each swing loses 4·F/k of amplitude, so a swing
       // the size of a target step dies within a cycle however small the viscous damping.
       // The step a swing starts from: the guide's target delta on a hinge; a slide has none, but
@@ -62,8 +74,8 @@ class DriveDampingRatio final : public Rule {
       // The ratio rests on a tensor inertia-invalid already reports: that finding is the fact to
       // act on, and the ratio follows once the tensor is real.
       const bool rests_on_doubt = below && !driven->inertia_doubt.empty();
-      const bool info_only =
-          steadies_stiff_spring || load_left_out || follows_quickly || friction_stops_ringing || rests_on_doubt;
+      const bool info_only = steadies_stiff_spring || load_left_out || follows_quickly || friction_stops_ringing ||
+                             rests_on_doubt || velocity_driven;
       const Span at = drive.damping && drive.damping->span.valid() ? drive.damping->span
                       : drive.stiffness->span.valid()              ? drive.stiffness->span
                                                                    : joint.name.span;
@@ -77,6 +89,9 @@ class DriveDampingRatio final : public Rule {
           : rests_on_doubt
               ? fmt::format("drive of {}: damping ratio {} is below {}, on an inertia that is itself in doubt",
                             short_name(joint), format_number(ratio, 3), format_number(low))
+          : velocity_driven
+              ? fmt::format("drive of {}: damping ratio {} on a joint without limits: a velocity drive",
+                            short_name(joint), format_number(ratio, 3))
           : follows_quickly
               ? fmt::format("drive of {}: damping ratio {} is above {}, but the joint follows its target within {} s",
                             short_name(joint), format_number(ratio, 3), format_number(high), format_number(time_constant, 2))
@@ -89,12 +104,18 @@ class DriveDampingRatio final : public Rule {
                          format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
       if (!drive.damping_origin.empty()) d.note(drive.damping_origin + ".");
       if (!driven->acceleration()) d.note(fmt::format("Inertias: {}.", driven->inertias_text()));
-      if (!below && !steadies_stiff_spring && !load_left_out)
+      if (!below && !steadies_stiff_spring && !load_left_out && !velocity_driven)
         d.note(fmt::format("So far above critical the drive acts as a first-order lag: its slow mode ω·(ζ − √(ζ² − 1)) "
                            "gives a time constant of {} s (≈ d/k), {} max_time_constant = {} s{}.",
                            format_number(time_constant, 3), follows_quickly ? "within" : "above",
                            format_number(max_time_constant),
                            follows_quickly ? ": the joint is damped hard but not slow" : ": the joint lags its target"));
+      if (velocity_driven)
+        d.note(fmt::format("The joint turns without limits (a wheel, a spindle): with damping this far above its "
+                           "stiffness the drive follows a target velocity, which is how such joints are driven; a "
+                           "position target would take d/k = {} s to reach. If the joint is meant to hold positions, "
+                           "give it limits or raise the stiffness.",
+                           format_number(time_constant, 3)));
       if (friction_stops_ringing && delta)
         d.note(joint.joint_friction->span, fmt::format(
                    "MuJoCo's frictionloss {} N·m acts as dry friction: each swing loses 4·F/k = {} rad of amplitude, "
@@ -134,7 +155,7 @@ class DriveDampingRatio final : public Rule {
             format_number(rate.h() * physics::natural_frequency(driven->stiffness, inertia), 3), rate.step_text(),
             physics::integrator_name(rate.integrator), format_number(1.0 / physics::slowest_decay_rate(servo), 3)));
       }
-      const bool fix_offered = !steadies_stiff_spring && !load_left_out;
+      const bool fix_offered = !steadies_stiff_spring && !load_left_out && !velocity_driven;
       if (driven->inertia_doubt.empty() && fix_offered)
         d.note(fmt::format("Damping for ratio 1 (critical, the guide's starting point) is {}.",
                            describe_gain(drive.damping, critical, damping_unit(joint))));
