@@ -224,6 +224,23 @@ TEST_CASE("compose: sublayer and reference cycles are reported and cut", "[usd][
   CHECK(std::count_if(messages.begin(), messages.end(), [](const std::string& m) { return m.starts_with("reference cycle"); }) >= 2);
 }
 
+TEST_CASE("compose: a sublayer two referenced stacks share is no cycle", "[usd][compose]") {
+  // Part files of an Onshape import each sublayer one materials layer that also defines
+  // /World: a frame references one part and its plate another. OpenUSD composes this without
+  // a cycle: a cycle is an arc back to the same prim of the same layer stack.
+  MemoryFileSystem fs({{"top.usda", "#usda 1.0\ndef \"Robot\" {\n def \"Frame\" (\n references = @a.usda@\n) {\n"
+                                    "  def \"Plate\" (\n references = @b.usda@\n) {}\n }\n}\n"},
+                       {"a.usda", "#usda 1.0\n(\n defaultPrim = \"World\"\n subLayers = [@m.usda@]\n)\ndef \"World\" { float a = 1 }\n"},
+                       {"b.usda", "#usda 1.0\n(\n defaultPrim = \"World\"\n subLayers = [@m.usda@]\n)\ndef \"World\" { float b = 2 }\n"},
+                       {"m.usda", "#usda 1.0\ndef \"World\" { float m = 3 }\n"}});
+  Stage s = compose(fs, "top.usda");
+  REQUIRE(s.usable);
+  CHECK(s.diagnostics.empty());
+  CHECK(number(s, "/Robot/Frame", "a") == 1);
+  CHECK(number(s, "/Robot/Frame/Plate", "b") == 2);
+  CHECK(number(s, "/Robot/Frame/Plate", "m") == 3);
+}
+
 TEST_CASE("compose: a syntax error in a sublayer makes the stage unusable", "[usd][compose]") {
   MemoryFileSystem fs({{"r.usda", "#usda 1.0\n(\n subLayers = [@bad.usda@]\n)\n"},
                        {"bad.usda", "#usda 1.0\ndef \"R\" {\n float x = \n}\n"}});

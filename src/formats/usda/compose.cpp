@@ -405,9 +405,13 @@ class Composer {
                path);
         continue;
       }
-      const bool cycle = std::any_of(targets.begin(), targets.end(), [&](const SpecRef& t) {
-        return std::find(active.begin(), active.end(), t.prim) != active.end();
-      });
+      // A cycle is an arc back to a site already being composed: the same prim of the same
+      // layer stack. Sublayers that two stacks share (a materials layer every part file
+      // includes) bring the same spec into both without any cycle, so the site is told by the
+      // prim of the stack's own layer, or its strongest spec when that layer has none.
+      const auto own = std::find_if(targets.begin(), targets.end(), [&](const SpecRef& t) { return t.file == *target; });
+      const Prim* site = own != targets.end() ? own->prim : targets.front().prim;
+      const bool cycle = std::find(active.begin(), active.end(), site) != active.end();
       if (cycle) {
         Diagnostic* d = report(a.arc.span, Severity::Warning,
                                fmt::format("reference cycle: the arc on '{}' leads back to '{}'; ignored", path, target_path),
@@ -418,10 +422,9 @@ class Composer {
                               path, target_path, a.arc.asset.empty() ? std::string() : fmt::format(" of '{}'", a.arc.asset)));
         continue;
       }
-      const std::size_t before = active.size();
-      for (const SpecRef& t : targets) active.push_back(t.prim);
+      active.push_back(site);
       add_node(targets, path, active, selections, out, uses);
-      active.resize(before);
+      active.pop_back();
     }
   }
 
