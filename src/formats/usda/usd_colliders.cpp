@@ -128,8 +128,34 @@ class Colliders {
     Eigen::Affine3d body_frame = Eigen::Affine3d::Identity();
     body_frame.linear() = rotation_of(body.linear());
     body_frame.translation() = body.translation();
-    if (auto shape = shape_of(prim, body_frame.inverse() * body * below))
+    const Eigen::Affine3d in_body = body_frame.inverse() * body * below;
+    if (auto shape = shape_of(prim, in_body)) {
       asset_.links[link->second].collisions.push_back(std::move(*shape));
+      return;
+    }
+    // PhysX merges the meshes below a collider with PhysxMeshMergeCollisionAPI into one shape
+    // (Isaac Sim's importers write a link's colliders so: an Xform referencing its meshes).
+    if (prim.has_api_schema("PhysxMeshMergeCollisionAPI")) merged_meshes(index, in_body, on_stage, link->second);
+  }
+
+  void merged_meshes(std::size_t index, const Eigen::Affine3d& in_body, const std::vector<bool>& on_stage,
+                     std::size_t link) {
+    std::vector<std::pair<std::size_t, Eigen::Affine3d>> pending{{index, in_body}};
+    while (!pending.empty()) {
+      auto [at, transform] = pending.back();
+      pending.pop_back();
+      for (std::size_t child : stage_.prims[at].children) {
+        if (!on_stage[child]) continue;
+        const ComposedPrim& prim = stage_.prims[child];
+        const Eigen::Affine3d below = transform * local_transform(stage_, prim);
+        if (prim.has_api_schema("PhysicsCollisionAPI")) continue;  // a collider of its own: read() takes it
+        if (prim.type_name == "Mesh") {
+          if (auto shape = shape_of(prim, below)) asset_.links[link].collisions.push_back(std::move(*shape));
+        } else {
+          pending.emplace_back(child, below);
+        }
+      }
+    }
   }
 
  private:
