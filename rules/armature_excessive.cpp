@@ -358,20 +358,16 @@ class ArmatureExcessive final : public Rule {
     return Crutch{without, inertia};
   }
 
-  // The first other joint whose armature is the same literal as this one's (one default class,
-  // one servo type), or with `or_same_value` the same number written again in the same file,
-  // and that `accept` takes.
+  // The first other joint in the same file whose armature has the same value as this one's and
+  // that `accept` takes (which may ask for the same literal: one default class, one servo type).
   template <class Accept>
-  static const Joint* sharing_armature_literal(const Asset& asset, const Joint& joint, bool or_same_value,
-                                               Accept accept) {
+  static const Joint* sharing_armature_value(const Asset& asset, const Joint& joint, Accept accept) {
     const Span& literal = joint.armature->span;
     if (!literal.valid()) return nullptr;
     for (const Joint& other : asset.joints) {
       if (&other == &joint || !other.armature) continue;
-      const Span& at = other.armature->span;
-      const bool same_literal = at.file == literal.file && at.offset == literal.offset;
-      const bool same_value = or_same_value && at.file == literal.file && other.armature->value == joint.armature->value;
-      if ((same_literal || same_value) && accept(other)) return &other;
+      if (other.armature->span.file == literal.file && other.armature->value == joint.armature->value && accept(other))
+        return &other;
     }
     return nullptr;
   }
@@ -381,8 +377,9 @@ class ArmatureExcessive final : public Rule {
   }
 
   static const Joint* actuated_sharing_literal(const Asset& asset, const Joint& joint) {
-    return sharing_armature_literal(asset, joint, false,
-                                    [](const Joint& other) { return other.actuation == Actuation::Actuated; });
+    return sharing_armature_value(asset, joint, [&](const Joint& other) {
+      return same_literal(joint, other) && other.actuation == Actuation::Actuated;
+    });
   }
 
   // Another actuated joint whose drive is steady without the armature and that takes it from
@@ -392,7 +389,7 @@ class ArmatureExcessive final : public Rule {
   // an equal value behind other gains (another class, another motor) says nothing.
   static const Joint* shared_by_a_steady_drive(const DriveModel& model, const Asset& asset, const Joint& joint) {
     const std::optional<DrivenJoint> own = model.spring_drive(joint);
-    return sharing_armature_literal(asset, joint, true, [&](const Joint& other) {
+    return sharing_armature_value(asset, joint, [&](const Joint& other) {
       if (other.actuation == Actuation::Passive || other.actuation == Actuation::Linkage) return false;
       const std::optional<DrivenJoint> driven = model.spring_drive(other);
       if (!driven || driven->acceleration() || !driven->judged.known ||

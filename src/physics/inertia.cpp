@@ -88,7 +88,6 @@ std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vect
   g.from_size = g.spread > 0;
   g.scale = scale;
   g.bound = g.from_size ? std::max(kGyrationSizeFactor * g.spread, kGyrationFloor * scale) : kGyrationFixedBound * scale;
-  g.shape_reach = shape_reach;
   if (std::isfinite(shape_reach) && shape_reach > g.bound) {
     g.bound = shape_reach;
     g.from_shapes = true;

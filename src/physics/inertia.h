@@ -57,7 +57,6 @@ struct Gyration {
   bool from_size = false;  // bound = max(factor × spread, floor); else the fixed bound
   bool about_axis = false;  // `largest` is about the one axis the link turns about
   double scale = 1;         // gyration_scale of the asset
-  double shape_reach = 0;   // how far the link's collision shapes reach from its COM, m (0: none known)
   bool from_shapes = false;  // the shapes' reach, larger than the other bounds, is the bound
   std::string bound_text() const;  // "3 × 0.114 m, the farthest joint frame on the link from its COM" / …
 };
