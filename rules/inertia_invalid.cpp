@@ -70,7 +70,7 @@ class InertiaInvalid final : public Rule {
     for (std::size_t i = 0; i < asset.links.size(); ++i)
       if (!from_geometry(asset.links[i])) check_link(asset.links[i], where[i], *articulation, settings, out);
     const auto equal = report_mass_equals_inertia(asset, out);
-    report_gyration(asset, where, equal, out);
+    report_gyration(asset, where, equal, settings, out);
   }
 
  private:
@@ -120,20 +120,34 @@ class InertiaInvalid final : public Rule {
     return found;
   }
 
+  struct FoundGyration {
+    const Link* link;
+    physics::Gyration g;
+    double excess;  // how far outside its bound, as a factor
+    double share;   // the tensor's moment over what the link's joint turns (Mᵢᵢ); 1 when unknown
+    double moved;   // that Mᵢᵢ, kg·m² (0 when unknown)
+  };
+
+  // What a revolute joint turns (Mᵢᵢ, everything distal to it about its axis), kg·m²; 0 when
+  // that is unknown or the joint slides.
+  static double moved_by_joint(const Placement& placement, const physics::Articulation& articulation) {
+    if (!placement.joint || !is_angular(placement.joint->type)) return 0.0;
+    const physics::ArticulatedInertia moved = articulation.joint_space_inertia(*placement.joint);
+    return moved.known && moved.value > 0 ? moved.value : 0.0;
+  }
+
   // A tensor too large (or too small) for the link that carries it: 0.02 kg fingers with
   // 0.01 kg·m² (Rethink's electric gripper), every Minitaur link. One warning per file at the
   // worst link; the others are notes. Only a body's own link is judged: a welded frame's tensor
-  // is merged into a heavier body. Placeholders already reported above are not repeated.
-  static void report_gyration(const Asset& asset, const std::vector<Placement>& where,
-                              const std::vector<const Link*>& already, Reporter& out) {
-    struct Found {
-      const Link* link;
-      physics::Gyration g;
-      double excess;  // how far outside its bound, as a factor
-    };
-    std::vector<Found> found;
+  // is merged into a heavier body. Placeholders already reported above are not repeated. A
+  // too-large moment that is a sliver of what its joint turns (the 0.1 g bodies between the
+  // coincident hinges of a converted OpenSim hip) changes no drive: one info, not a warning.
+  void report_gyration(const Asset& asset, const std::vector<Placement>& where, const std::vector<const Link*>& already,
+                       const Settings& settings, Reporter& out) const {
+    std::vector<FoundGyration> found, harmless;
     const auto articulation = physics::shared_articulation(asset);
     const double scale = physics::gyration_scale(asset);
+    const double harmless_share = rule_option(info_, settings, "harmless_share");
     std::vector<bool> reported(asset.links.size(), false);
     for (const Link* link : already)
       if (const auto i = asset.index_of(*link)) reported[*i] = true;
@@ -148,17 +162,45 @@ class InertiaInvalid final : public Rule {
                                              physics::collision_reach(link, link.inertial->com));
       if (!g || g->verdict == physics::Gyration::Verdict::Plausible) continue;
       const bool large = g->verdict == physics::Gyration::Verdict::TooLarge;
-      found.push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest});
+      const double moved = large ? moved_by_joint(where[i], *articulation) : 0.0;
+      const double share = moved > 0 ? std::min(1.0, g->largest * g->largest * link.inertial->mass.value / moved) : 1.0;
+      (share < harmless_share ? harmless : found)
+          .push_back({&link, *g, large ? g->largest / g->bound : physics::kGyrationMinRadius / g->largest, share, moved});
     }
-    if (found.empty()) return;
-    std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.excess > b.excess; });
-    const Found& worst = found.front();
+    const auto by_excess = [](const FoundGyration& a, const FoundGyration& b) { return a.excess > b.excess; };
+    std::stable_sort(found.begin(), found.end(), by_excess);
+    std::stable_sort(harmless.begin(), harmless.end(), by_excess);
+    if (!found.empty()) {
+      Diagnostic& d = report_gyration_list(found, Severity::Warning, out);
+      if (!harmless.empty())
+        d.note(harmless.front().link->inertial->inertia_span,
+               fmt::format("{} more link{} ('{}' first) {} outside the bound by a moment under {} % of what {} joint "
+                           "turns: harmless.",
+                           harmless.size(), harmless.size() == 1 ? "" : "s", harmless.front().link->name.text,
+                           harmless.size() == 1 ? "is" : "are", format_number(harmless_share * 100),
+                           harmless.size() == 1 ? "its" : "each"));
+      d.note("Take mass and inertia from CAD (or compute them from the link's geometry).");
+    } else if (!harmless.empty()) {
+      const FoundGyration& worst = harmless.front();
+      const Joint& joint = *where[*asset.index_of(*worst.link)].joint;
+      Diagnostic& d = report_gyration_list(harmless, Severity::Info, out);
+      d.note(joint.name.span,
+             fmt::format("Harmless: its {} kg·m² is {} % of Mᵢᵢ = {} kg·m², all that {} turns (under harmless_share, {} "
+                         "%): the drives see almost none of it.",
+                         format_number(worst.g.largest * worst.g.largest * worst.link->inertial->mass.value, 4),
+                         format_number(worst.share * 100, 2), format_number(worst.moved, 4), joint_label(joint),
+                         format_number(harmless_share * 100)));
+    }
+  }
+
+  static Diagnostic& report_gyration_list(const std::vector<FoundGyration>& found, Severity severity, Reporter& out) {
+    const FoundGyration& worst = found.front();
     const Inertial& in = *worst.link->inertial;
     const bool large = worst.g.verdict == physics::Gyration::Verdict::TooLarge;
     const std::string more =
         found.size() > 1 ? fmt::format(" (and {} more link{})", found.size() - 1, found.size() == 2 ? "" : "s") : "";
     Diagnostic& d = out.report(
-        in.inertia_span, Severity::Warning,
+        in.inertia_span, severity,
         fmt::format("link '{}': radius of gyration {} m is {} than the link could be{}", short_path(worst.link->name.text),
                     format_number(worst.g.largest, 3), large ? "larger" : "smaller", more));
     d.note(fmt::format("√(I/m) = √({} kg·m² / {} kg) = {} m{}, {} {}.",
@@ -172,7 +214,8 @@ class InertiaInvalid final : public Rule {
     else
       d.note("A link this heavy with so small a tensor is a point mass typed in: its rotation reacts to torques as if "
              "it weighed nothing.");
-    d.note("Natural frequencies √(k/I) and damping ratios computed on it are wrong; the drive rules offer no fix from it.");
+    if (severity != Severity::Info)
+      d.note("Natural frequencies √(k/I) and damping ratios computed on it are wrong; the drive rules offer no fix from it.");
     for (std::size_t i = 1; i < found.size() && i <= 5; ++i)
       d.note(found[i].link->inertial->inertia_span,
              fmt::format("Also '{}': √(I/m) = {} m, bound {} m.", found[i].link->name.text,
@@ -181,7 +224,7 @@ class InertiaInvalid final : public Rule {
                                                                                                    : physics::kGyrationMinRadius,
                                        3)));
     if (found.size() > 6) d.note(fmt::format("And {} more links like these.", found.size() - 6));
-    d.note("Take mass and inertia from CAD (or compute them from the link's geometry).");
+    return d;
   }
 
   // No link has an <inertial>: a description for RViz and MoveIt, not for simulation. One
@@ -404,7 +447,9 @@ class InertiaInvalid final : public Rule {
                    "relative slack allowed on the triangle inequality I_max ≤ (I_a + I_b)·(1 + tolerance)"},
                   {"definiteness_tolerance", 1e-9,
                    "a principal moment within this fraction of the largest one counts as zero, not negative"},
-                  {"dummy_mass", 1e-4, "a root link this light (kg) is a frame, not a body: its tensor is not checked; a welded link this light gets infos only"}}};
+                  {"dummy_mass", 1e-4, "a root link this light (kg) is a frame, not a body: its tensor is not checked; a welded link this light gets infos only"},
+                  {"harmless_share", 0.01,
+                   "a radius of gyration out of bound whose moment is under this fraction of what the link's joint turns is an info"}}};
 };
 
 }  // namespace

@@ -34,6 +34,9 @@ class UnitsAngleRadians final : public Rule {
       if (largest == 0 || largest > max_magnitude) continue;
       // Whole degrees (0 1, -2 2) are plausible small ranges; radians rarely are whole.
       if (lower.authored == std::round(lower.authored) && upper.authored == std::round(upper.authored)) continue;
+      // Degrees a converter computed from round radians (4.58 = 0.08 rad, as a motion-capture
+      // humanoid writes every range): already converted, not radians left unconverted.
+      if (converted_from_round_radians(lower.authored) && converted_from_round_radians(upper.authored)) continue;
       if (!seen.insert(upper.span.offset + (static_cast<std::size_t>(upper.span.file) << 48)).second) continue;
       radian_like.push_back(&joint);
     }
@@ -45,6 +48,20 @@ class UnitsAngleRadians final : public Rule {
   }
 
  private:
+  // Whether degrees written with d decimals are a radian value of two decimals converted and
+  // rounded: |x·π/180 − round₂(x·π/180)| within the rounding of the last written digit. A
+  // radian value left unconverted (1.57, 0.785) is that only by chance (about 1 in 60 per bound).
+  static bool converted_from_round_radians(double degrees) {
+    if (degrees == 0) return true;
+    const std::string text = fmt::format("{}", std::fabs(degrees));
+    if (text.find_first_of("eE") != std::string::npos) return false;
+    const auto dot = text.find('.');
+    const int decimals = dot == std::string::npos ? 0 : static_cast<int>(text.size() - dot - 1);
+    const double radians = radians_from_degrees(degrees);
+    const double half_digit = 0.5 * std::pow(10.0, -decimals);
+    return std::fabs(radians - std::round(radians * 100) / 100) <= radians_from_degrees(half_digit) * (1 + 1e-9);
+  }
+
   static std::string derivation(const Joint& joint, double max_magnitude) {
     const Quantity& lower = *joint.lower;
     const Quantity& upper = *joint.upper;

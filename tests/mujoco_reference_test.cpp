@@ -189,6 +189,18 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
     }
   }
 
+  // Dampers (an affine actuator without a spring: <velocity>) add kv·g² to whatever drives
+  // their joint; a joint with dampers only has a velocity drive.
+  std::map<const Joint*, double> damper_kv;
+  for (const auto& a : compiled["actuators"]) {
+    if (a["joint"].is_null() || a["biasprm"].is_null() || a["biastype"].get<int>() != 1 || a["gaintype"].get<int>() != 0)
+      continue;
+    const Joint& joint = *ours.at(a["joint"].get<std::size_t>());
+    const double g = a["gear"];
+    if (is_single_dof(joint.type) && a["biasprm"][1].get<double>() == 0 && a["biasprm"][2].get<double>() < 0)
+      damper_kv[&joint] += -a["biasprm"][2].get<double>() * g * g;
+  }
+
   // Actuators on a joint: the first servo per joint is its drive; motors bound its effort.
   std::map<const Joint*, bool> driven;
   std::map<const Joint*, std::optional<double>> effort_bound;
@@ -236,10 +248,7 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
       const double stiffness = -a["biasprm"][1].get<double>() * g * g;
       const double kv = -a["biasprm"][2].get<double>();
       if (!(stiffness > 0 || kv > 0)) continue;  // not a drive
-      if (!(stiffness > 0)) {  // a velocity servo: no spring for the drive rules to judge
-        c.skip(kKind, element);
-        continue;
-      }
+      if (!(stiffness > 0)) continue;  // a damper: compared with its joint's drive below
       if (driven[&joint]) {
         c.skip(kSecondServo, element);
         continue;
@@ -256,8 +265,8 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
       const double joint_damping = value_of(joint.joint_damping);
       if (drive.damping_unknown.empty()) {
         const bool diagonalised = joints[a["joint"].get<std::size_t>()]["inertia_diagonalised"].get<bool>();
-        c.value("damping (kv·g² + joint damping)", element, kv * g * g + joint_damping, value_of(drive.damping),
-                diagonalised ? 1e-5 : 1e-9);
+        c.value("damping (kv·g² + dampers' kv·g² + joint damping)", element,
+                kv * g * g + damper_kv[&joint] + joint_damping, value_of(drive.damping), diagonalised ? 1e-5 : 1e-9);
       } else if (from_geoms(asset, articulation.joint_space_inertia(joint))) {
         c.skip(kGeomInertia, element + " kv");
       } else {
@@ -270,6 +279,21 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
       else
         c.absent("max force", element, drive.max_force);
     }
+  }
+
+  for (const auto& [joint, kv] : damper_kv) {
+    if (driven[joint]) continue;
+    ++c.compared["damper"];
+    const std::string element = fmt::format("dampers of '{}'", joint->name.text);
+    if (!joint->drive) {
+      c.differences.push_back(fmt::format("{}: {}: MuJoCo damps the joint with kv {}, asset-lint has no drive", c.model,
+                                          element, number(kv)));
+      continue;
+    }
+    c.value("velocity drive damping (dampers' kv·g² + joint damping)", element, kv + value_of(joint->joint_damping),
+            value_of(joint->drive->damping));
+    c.value("velocity drive stiffness", element, 0.0,
+            joint->drive->stiffness ? std::optional(joint->drive->stiffness->value) : std::nullopt);
   }
 
   // Joint equalities: joint1 follows joint2 (q1 = c0 + c1·q2), or joint2 follows joint1.

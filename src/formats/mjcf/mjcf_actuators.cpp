@@ -83,6 +83,13 @@ void apply(const XMLElement* el, Params& p, Values& values) {
     }
     p.affine = true;
     p.gaintype = "fixed";
+  } else if (tag == "velocity") {
+    // kv = gainprm[0] (1 unless a class or the element sets it); biasprm = (0, 0, −kv).
+    if (Attr a = own(el, "kv"); a && values.numbers(a, "kv", 1)) p.gain = token_param(a, "kv", 0, 1.0);
+    p.bias_position = Param{};
+    p.bias_velocity = p.gain;
+    p.affine = true;
+    p.gaintype = "fixed";
   } else if (tag == "motor") {
     p.gain = Param::fixed(1.0);
     p.bias_position = p.bias_velocity = Param{};
@@ -114,7 +121,8 @@ Joint* joint_named(Asset& asset, std::string_view name) {
 }  // namespace
 
 void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler,
-                   const FixedTendons& tendons, Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios) {
+                   const FixedTendons& tendons, Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios,
+                   std::vector<Damper>& dampers) {
   const std::string_view tag = el->Name();
   const char* cls = el->Attribute("class");
   if (cls && !defaults.has_class(cls)) {
@@ -150,7 +158,7 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   joint->actuation = Actuation::Actuated;
   if (p.gear.attr && std::abs(p.gear.value) != 1.0 && p.gear.value != 0.0)
     joint->transmission = Transmission{std::abs(p.gear.value), values.token_span(p.gear.attr, "gear", 0)};
-  if (tag != "position" && tag != "general" && tag != "motor") {
+  if (tag != "position" && tag != "general" && tag != "motor" && tag != "velocity") {
     values.unsupported(values.element_span(el), fmt::format("<{}> actuators are not modelled ({})", tag, label))
         .note(fmt::format("The joint '{}' counts as undriven by it.", joint_name));
     return;
@@ -164,6 +172,18 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
 
   if (p.gaintype != "fixed") {
     values.unsupported(values.element_span(el), fmt::format("{}: gaintype '{}' is not modelled", label, p.gaintype));
+    return;
+  }
+  // A damper (no spring: a velocity actuator) adds −kv·q̇ to whatever else drives the joint;
+  // it is folded in once every actuator is read.
+  if (p.affine && p.bias_position.value == 0 && p.bias_velocity.value > 0 &&
+      !(p.bias_velocity.name && std::string_view(p.bias_velocity.name) == "dampratio")) {
+    OptQuantity max_force;
+    if (force_limited && p.forcerange) max_force = range_bound(p.forcerange, "forcerange", force_unit, std::abs(g), values);
+    dampers.push_back({static_cast<std::size_t>(joint - asset.joints.data()),
+                       quantity(p.bias_velocity, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter,
+                                g * g, values),
+                       max_force, values.element_span(el), label});
     return;
   }
   if (p.affine && (p.bias_position.value > 0 || p.bias_velocity.value > 0)) {
@@ -205,6 +225,47 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   else if (ctrl_limited && p.ctrlrange)
     effort = range_bound(p.ctrlrange, "ctrlrange", force_unit, std::abs(g * p.gain.value), values);
   if (effort && !joint->effort) joint->effort = effort;
+}
+
+void add_dampers(const std::vector<Damper>& dampers, Asset& asset) {
+  for (const Damper& damper : dampers) {
+    Joint& joint = asset.joints[damper.joint];
+    const Quantity& kv = *damper.damping;
+    if (!joint.drive) {
+      // Only dampers on the joint: a velocity drive, as PhysX has one (stiffness 0). MuJoCo
+      // damps the joint with the joint's own damping alike.
+      Drive drive;
+      drive.span = damper.span;
+      drive.type_span = damper.span;
+      drive.stiffness = Quantity::unauthored(0, is_angular(joint.type) ? Unit::NewtonMeterPerRadian : Unit::NewtonPerMeter);
+      const double joint_damping = joint.joint_damping ? joint.joint_damping->value : 0.0;
+      drive.damping = joint_damping > 0 ? Quantity::unauthored(kv.value + joint_damping, kv.unit) : kv;
+      drive.max_force = damper.max_force;
+      if (joint_damping > 0)
+        drive.damping_origin = fmt::format("{}: kv {}, plus the joint's damping {}: {}", damper.label,
+                                           format_number(kv.value, 6), format_number(joint_damping, 6),
+                                           format_number(kv.value + joint_damping, 6));
+      joint.drive = std::move(drive);
+      continue;
+    }
+    Drive& drive = *joint.drive;
+    if (!drive.damping_unknown.empty()) continue;  // what it adds to stays unknown
+    const double before = drive.damping ? drive.damping->value : 0.0;
+    const std::string added = fmt::format("{} on the same joint, kv {} (MuJoCo applies kv·(ctrl − q̇): whatever its "
+                                          "control, it damps the joint)",
+                                          damper.label, format_number(kv.value, 6));
+    if (before > 0) {
+      const std::string origin = drive.damping_origin.empty()
+                                     ? fmt::format("The servo's and the joint's damping {}", format_number(before, 6))
+                                     : drive.damping_origin;
+      // Two literals make up the damping then: no single one to rewrite.
+      drive.damping = Quantity::unauthored(before + kv.value, kv.unit);
+      drive.damping_origin = fmt::format("{}; plus {}: {}", origin, added, format_number(before + kv.value, 6));
+    } else {
+      drive.damping = kv;
+      drive.damping_origin = fmt::format("The damping is {}", added);
+    }
+  }
 }
 
 }  // namespace assetlint::mjcf

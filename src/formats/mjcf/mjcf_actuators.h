@@ -6,6 +6,7 @@
 //     −biasprm[1]) MuJoCo reads a positive biasprm[2] as a damping ratio and compiles it to
 //     kv = 2ζ·√(kp·M₀/g²) (mjcf_dampratio.h). kv and dampratio write the same slot: the
 //     class chain, then the element, each overwrites it.
+//   <velocity kv>:    gainprm = kv, biasprm = (0, 0, −kv): a damper towards ctrl (velocity)
 //   <motor>:          gainprm = 1, no bias
 // A joint-transmission actuator with gear g moves the joint with g²·kp per radian
 // (length = g·q, force on the joint = g·force): stiffness = −biasprm[1]·g²,
@@ -36,10 +37,27 @@ struct DampRatio {
   std::string label;      // "actuator 'x'"
 };
 
+// A damper actuator (a <velocity>, or any affine actuator without a spring: force =
+// kv·(ctrl − q̇)) on a joint. Folded into the joint's drive after every actuator is read, so a
+// position servo and a velocity actuator on one joint (a PD pair) make one drive.
+struct Damper {
+  std::size_t joint = 0;   // index into asset.joints
+  OptQuantity damping;     // kv·g², N·m·s/rad or N·s/m
+  OptQuantity max_force;   // its force range on the joint, when limited
+  Span span;               // the actuator element
+  std::string label;       // "actuator 'x'"
+};
+
 // Reads one actuator element onto the joint it names (already in `asset`), and marks every
 // joint it moves, directly or through a fixed tendon, as actuated. A servo damped by a damping
-// ratio is appended to `damp_ratios` for the pass after the whole model is read.
+// ratio is appended to `damp_ratios`, a damper to `dampers`, for the passes after the whole
+// model is read.
 void read_actuator(const tinyxml2::XMLElement* el, const Defaults& defaults, const Compiler& compiler,
-                   const FixedTendons& tendons, Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios);
+                   const FixedTendons& tendons, Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios,
+                   std::vector<Damper>& dampers);
+
+// Adds each damper's kv·g² to its joint's drive (after derive_dampratio_damping: a servo's kv
+// from dampratio does not count them); a joint with dampers only gets a velocity drive.
+void add_dampers(const std::vector<Damper>& dampers, Asset& asset);
 
 }  // namespace assetlint::mjcf

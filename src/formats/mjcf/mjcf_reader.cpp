@@ -75,6 +75,7 @@ class Reader {
     // composer, MuJoCo's attach): none of its joints can be called passive either.
     bool any_actuator = false;
     std::vector<DampRatio> damp_ratios;
+    std::vector<Damper> dampers;
     for (const XMLElement* el : sections) {
       const std::string_view tag = el->Name();
       if (tag == "equality") {
@@ -82,7 +83,7 @@ class Reader {
           if (std::string_view(c->Name()) == "joint") joint_equalities.push_back(c);
       } else if (tag == "actuator") {
         for (const XMLElement* c : sources_.children(el)) {
-          read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset, damp_ratios);
+          read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset, damp_ratios, dampers);
           any_actuator = any_actuator || default_kind(c->Name()) == "actuator";
           const char* tendon = c->Attribute("tendon");
           if ((tendon && !tendons.contains(tendon)) || c->Attribute("site") || c->Attribute("body") ||
@@ -105,6 +106,7 @@ class Reader {
     result_.asset.index_names();  // after the equalities: they make the mimics
     // Once the whole tree is known: MuJoCo derives kv from dampratio and the inertia at qpos0.
     derive_dampratio_damping(damp_ratios, values_, result_.asset);
+    add_dampers(dampers, result_.asset);
     result_.asset.inherited_literals = values_.inherited_literals();
     // Equalities are read after the actuators; report in document order all the same.
     std::stable_sort(result_.diagnostics.begin(), result_.diagnostics.end(), [](const auto& a, const auto& b) {
