@@ -400,9 +400,20 @@ class ArmatureExcessive final : public Rule {
     });
   }
 
+  // Same stiffness, and the same damping or (MuJoCo) the same servo damping ratio: `dampratio`
+  // gives each joint the kv its own M₀ᵢᵢ needs, so one servo's gains written on every joint
+  // compile to different kv. The joint's own damping must then match too.
   static bool same_gains(const DrivenJoint& a, const DrivenJoint& b) {
     const auto equal = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y)); };
-    return equal(a.stiffness, b.stiffness) && equal(a.damping, b.damping);
+    if (!equal(a.stiffness, b.stiffness)) return false;
+    if (equal(a.damping, b.damping)) return true;
+    if (a.rate.solver != physics::Solver::MuJoCo || b.rate.solver != physics::Solver::MuJoCo) return false;
+    const auto joint_damping = [](const DrivenJoint& d) { return d.joint->joint_damping ? d.joint->joint_damping->value : 0.0; };
+    const auto servo_ratio = [&](const DrivenJoint& d) {
+      return (d.damping - joint_damping(d)) / (2 * std::sqrt(d.stiffness * d.solver_inertia()));
+    };
+    return a.stiffness > 0 && equal(joint_damping(a), joint_damping(b)) &&
+           std::abs(servo_ratio(a) - servo_ratio(b)) <= 1e-6 * std::max(servo_ratio(a), servo_ratio(b));
   }
 
   static std::string moved_text(const Candidate& c) {

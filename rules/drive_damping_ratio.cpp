@@ -15,12 +15,6 @@ namespace {
 // point. Far below it the joint rings; far above it the joint crawls. I is the drive's judged
 // inertia (drive_support.h), the same one drive-natural-frequency uses.
 class DriveDampingRatio final : public Rule {
-  // Continuous, or revolute with no finite bound on either side (USD writes ±inf).
-  static bool turns_without_limits(const Joint& joint) {
-    if (joint.type == JointType::Continuous) return true;
-    return !(joint.lower && joint.upper && std::isfinite(joint.lower->value) && std::isfinite(joint.upper->value));
-  }
-
  public:
   const RuleInfo& info() const override { return info_; }
 

@@ -35,7 +35,8 @@ class DriveImplicitAttenuation final : public Rule {
       if (share >= threshold) continue;
       const physics::SimulationRate& rate = driven->rate;
       const bool capped_anyway = held_at_max_force(*driven, row, settings);
-      const Severity severity = !capped_anyway && (driven->verdict_on_articulation() || driven->acceleration())
+      const bool wheel = velocity_drive(*driven);
+      const Severity severity = !capped_anyway && !wheel && (driven->verdict_on_articulation() || driven->acceleration())
                                     ? Severity::Warning
                                     : Severity::Info;
       Diagnostic& d = out.report(
@@ -43,8 +44,13 @@ class DriveImplicitAttenuation final : public Rule {
           fmt::format("drive of {} holds {}% of k·Δ at a hard stop (x = {}, {}{}){}", short_name(joint),
                       format_number(100.0 * share, 2), format_number(x, 2), rate.step_text(),
                       driven->verdict_on_articulation() || driven->acceleration() ? "" : ", lighter link",
-                      capped_anyway ? ", still above its max force" : ""));
+                      capped_anyway ? ", still above its max force" : wheel ? ", a velocity drive" : ""));
       d.note(factor_text(*driven, row));
+      if (wheel)
+        d.note(fmt::format("The joint turns without limits and its damping is {}× critical or more: the drive makes it "
+                           "follow a target velocity (a wheel), and its stiffness only nudges it. No position target "
+                           "is held at a stop, so the attenuation of k·Δ costs nothing the joint is asked for.",
+                           format_number(kVelocityDriveRatio)));
       if (!driven->verdict_on_articulation() && !driven->acceleration())
         d.note("The articulated inertia is unknown, so this rests on the guide's lighter-link estimate, which can sit "
                "far below what the drive row sees (and x with it); author the missing masses to judge it.");

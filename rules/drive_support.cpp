@@ -190,4 +190,15 @@ physics::Servo mujoco_servo(const DrivenJoint& driven, double inertia) {
   return physics::mujoco_servo(*driven.joint, driven.stiffness, driven.damping, inertia);
 }
 
+bool turns_without_limits(const Joint& joint) {
+  if (joint.type == JointType::Continuous) return true;
+  return !(joint.lower && joint.upper && std::isfinite(joint.lower->value) && std::isfinite(joint.upper->value));
+}
+
+bool velocity_drive(const DrivenJoint& driven) {
+  if (driven.acceleration() || !is_angular(driven.joint->type) || !turns_without_limits(*driven.joint)) return false;
+  if (driven.stiffness <= 0 || driven.inertia_used <= 0) return false;
+  return driven.damping >= kVelocityDriveRatio * physics::damping_for_ratio(1.0, driven.stiffness, driven.inertia_used);
+}
+
 }  // namespace assetlint::rules

@@ -118,6 +118,15 @@ Unit damping_unit(const Joint& joint);
 // A gain as the file writes it (config values in PhysX units).
 std::string describe_gain(const OptQuantity& q, double model_value, Unit physx_unit);
 
+// Continuous, or revolute with no finite bound on either side (USD writes ±inf): a wheel.
+bool turns_without_limits(const Joint& joint);
+
+// A drive on a joint that turns without limits with damping at least kVelocityDriveRatio times
+// critical: driven by velocity (a wheel), its small stiffness only nudging it. Nobody asks
+// it to reach or hold a position.
+inline constexpr double kVelocityDriveRatio = 10.0;
+bool velocity_drive(const DrivenJoint& driven);
+
 // The target delta of the guide's stiffness method (radians); angular joints only,
 // since [gripper] target_delta_deg is an angle.
 std::optional<double> target_delta(const Joint& joint, const Settings& settings);
