@@ -82,6 +82,28 @@ class InertiaInvalid final : public Rule {
     return inertial.mass.value > 0 && scale <= inertial.mass.value * kPointMassGyration * kPointMassGyration;
   }
 
+  // How far rounding the six entries to the digits they are written with can move I₃ − (I₁ + I₂):
+  // a thin plate's izz = ixx + iyy written as 0.001437, 0.001437, 0.002875 breaks the triangle
+  // inequality by 1e-6, half a unit in the last digit of each. Values the reader converted
+  // (other units) show no short form and allow next to nothing.
+  static double written_rounding(const Eigen::Matrix3d& inertia) {
+    double slack = 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j) {
+        if (inertia(i, j) == 0) continue;
+        // The shortest text that reads back as the value: "0.001437", "3.781e-07".
+        const std::string text = fmt::format("{}", std::fabs(inertia(i, j)));
+        const auto e = text.find_first_of("eE");
+        const std::string mantissa = text.substr(0, e);
+        const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
+        const auto dot = mantissa.find('.');
+        const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+        // Off-diagonal entries move the principal moments too, twice as much at most.
+        slack += (i == j ? 1.0 : 2.0) * 0.5 * std::pow(10.0, exponent - decimals);
+      }
+    return slack;
+  }
+
   // Mass properties MuJoCo computes from a body's geoms describe that geometry exactly: nothing
   // typed by hand to judge.
   static bool from_geometry(const Link& link) { return link.inertial && link.inertial->from_geoms; }
@@ -380,7 +402,8 @@ class InertiaInvalid final : public Rule {
       merged_note(d);
     } else if (moments[0] <= relative * scale) {
       report_singular(link, placement, moments, relative, out);
-    } else if (moments[2] > (moments[0] + moments[1]) * (1 + triangle)) {
+    } else if (moments[2] > (moments[0] + moments[1]) * (1 + triangle) &&
+               moments[2] - (moments[0] + moments[1]) > written_rounding(inertial.inertia)) {
       Diagnostic& d = out.report(inertial.inertia_span, impossible,
                                  fmt::format("inertia of link '{}' violates the triangle inequality", link.name.text));
       d.note(fmt::format("Principal moments {}: {} > {} + {}.", moments_text(moments), format_number(moments[2], 4),

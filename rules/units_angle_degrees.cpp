@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "rules/all_rules.h"
@@ -19,6 +20,7 @@ class UnitsAngleDegrees final : public Rule {
     const double min_magnitude = rule_option(info_, settings, "min_magnitude_rad");
     const double pi_tolerance = rule_option(info_, settings, "pi_multiple_tolerance");
     const double max_magnitude = rule_option(info_, settings, "max_magnitude_deg");
+    std::vector<const Joint*> degree_like;
     for (const Joint& joint : asset.joints) {
       if (joint.type != JointType::Revolute || !joint.lower || !joint.upper) continue;
       const Quantity& lower = *joint.lower;
@@ -30,6 +32,16 @@ class UnitsAngleDegrees final : public Rule {
       // multi-turn ranges or "no limit" placeholders. Whole numbers (44, 90) are degrees.
       if (radian_like(lower.value, pi_tolerance) && radian_like(upper.value, pi_tolerance)) continue;
       if (unlimited_stand_in(asset, joint)) continue;
+      degree_like.push_back(&joint);
+    }
+    const std::vector<const Joint*> shared = shared_symmetric_bound(degree_like);
+    if (!shared.empty()) report_shared(shared, min_magnitude, out);
+    for (const Joint* each : degree_like) {
+      if (std::find(shared.begin(), shared.end(), each) != shared.end()) continue;
+      const Joint& joint = *each;
+      const Quantity& lower = *joint.lower;
+      const Quantity& upper = *joint.upper;
+      const double largest = std::max(std::fabs(lower.value), std::fabs(upper.value));
       const double lower_rad = radians_from_degrees(lower.authored);
       const double upper_rad = radians_from_degrees(upper.authored);
       Diagnostic& d = out.report(largest == std::fabs(upper.value) ? upper.span : lower.span,
@@ -55,6 +67,37 @@ class UnitsAngleDegrees final : public Rule {
   }
 
  private:
+  // One symmetric bound written on many joints (±100 on every body joint of an exported
+  // humanoid): a value typed for "no limit" or "not set", not each joint's range in degrees.
+  // The largest group of at least kSharedJoints joints with the same [−b, b].
+  static constexpr std::size_t kSharedJoints = 3;
+  static std::vector<const Joint*> shared_symmetric_bound(const std::vector<const Joint*>& joints) {
+    std::map<double, std::vector<const Joint*>> by_bound;
+    for (const Joint* joint : joints)
+      if (joint->lower->authored == -joint->upper->authored) by_bound[std::fabs(joint->upper->authored)].push_back(joint);
+    std::vector<const Joint*> largest;
+    for (auto& [bound, group] : by_bound)
+      if (group.size() >= kSharedJoints && group.size() > largest.size()) largest = group;
+    return largest;
+  }
+
+  void report_shared(const std::vector<const Joint*>& joints, double min_magnitude, Reporter& out) const {
+    const Joint& first = *joints.front();
+    const double bound = std::fabs(first.upper->authored);
+    Diagnostic& d = out.report(first.upper->span, Severity::Warning,
+                               fmt::format("{} revolute joints share the limits [{}, {}]: a placeholder, not their ranges",
+                                           joints.size(), format_number(-bound), format_number(bound)));
+    d.note(fmt::format("URDF limits are radians: {} rad is {} turns, beyond the {} rad threshold (option "
+                       "min_magnitude_rad), so every consumer lets these joints turn freely.",
+                       format_number(bound, 4), format_number(bound / (2 * std::numbers::pi), 3),
+                       format_number(min_magnitude, 4)));
+    d.note(fmt::format("One symmetric value on {} joints ({} first, {} last) is what an author types for \"no limit\" "
+                       "or \"not set\"; read as degrees it would give every one of them the same ±{}°, which no "
+                       "robot's joints have. No value is proposed.",
+                       joints.size(), joint_label(first), joint_label(*joints.back()), format_number(bound)));
+    d.note("Write each joint's range from the data sheet in radians; a joint that turns freely is continuous.");
+  }
+
   // A symmetric bound on a joint of a virtual base (a massless child link, or the same ±value
   // on a prismatic sibling: ±20 rad beside ±20 m) stands for "unlimited"; read as degrees it
   // would clamp a floating base to ±20°.
