@@ -32,10 +32,13 @@ class UnitsAngleDegrees final : public Rule {
       // multi-turn ranges or "no limit" placeholders. Whole numbers (44, 90) are degrees.
       if (radian_like(lower.value, pi_tolerance) && radian_like(upper.value, pi_tolerance)) continue;
       if (unlimited_stand_in(asset, joint)) continue;
+      // A full turn or more read as degrees ([-180, 180]) restricts nothing within a turn, and
+      // neither does the same number of radians: the reading changes no motion the joint makes.
+      if (upper.authored - lower.authored >= 360) continue;
       degree_like.push_back(&joint);
     }
     const std::vector<const Joint*> shared = shared_symmetric_bound(degree_like);
-    if (!shared.empty()) report_shared(shared, min_magnitude, out);
+    if (!shared.empty()) report_shared(asset, shared, min_magnitude, out);
     for (const Joint* each : degree_like) {
       if (std::find(shared.begin(), shared.end(), each) != shared.end()) continue;
       const Joint& joint = *each;
@@ -47,8 +50,8 @@ class UnitsAngleDegrees final : public Rule {
       Diagnostic& d = out.report(largest == std::fabs(upper.value) ? upper.span : lower.span,
                                  fmt::format("limits [{}, {}] of {} look like degrees", format_number(lower.authored),
                                              format_number(upper.authored), joint_label(joint)));
-      d.note(fmt::format("URDF limits are radians: {} rad is {} turns, beyond the {} rad threshold (option "
-                         "min_magnitude_rad)",
+      d.note(fmt::format("{}: {} rad is {} turns, beyond the {} rad threshold (option min_magnitude_rad)",
+                         radians_text(asset),
                          format_number(largest, 4), format_number(largest / (2 * std::numbers::pi), 3),
                          format_number(min_magnitude, 4)));
       // Convert only the limits that look like degrees themselves: whole numbers or
@@ -81,15 +84,21 @@ class UnitsAngleDegrees final : public Rule {
     return largest;
   }
 
-  void report_shared(const std::vector<const Joint*>& joints, double min_magnitude, Reporter& out) const {
+  static std::string radians_text(const Asset& asset) {
+    return asset.format == SourceFormat::Mjcf ? "This file reads angles in radians (<compiler angle=\"radian\">)"
+                                              : "URDF limits are radians";
+  }
+
+  void report_shared(const Asset& asset, const std::vector<const Joint*>& joints, double min_magnitude,
+                     Reporter& out) const {
     const Joint& first = *joints.front();
     const double bound = std::fabs(first.upper->authored);
     Diagnostic& d = out.report(first.upper->span, Severity::Warning,
                                fmt::format("{} revolute joints share the limits [{}, {}]: a placeholder, not their ranges",
                                            joints.size(), format_number(-bound), format_number(bound)));
-    d.note(fmt::format("URDF limits are radians: {} rad is {} turns, beyond the {} rad threshold (option "
-                       "min_magnitude_rad), so every consumer lets these joints turn freely.",
-                       format_number(bound, 4), format_number(bound / (2 * std::numbers::pi), 3),
+    d.note(fmt::format("{}: {} rad is {} turns, beyond the {} rad threshold (option min_magnitude_rad), so every "
+                       "consumer lets these joints turn freely.",
+                       radians_text(asset), format_number(bound, 4), format_number(bound / (2 * std::numbers::pi), 3),
                        format_number(min_magnitude, 4)));
     d.note(fmt::format("One symmetric value on {} joints ({} first, {} last) is what an author types for \"no limit\" "
                        "or \"not set\"; read as degrees it would give every one of them the same ±{}°, which no "
