@@ -21,11 +21,6 @@ std::string normalize(const fs::path& path) {
   return s.empty() ? std::string(".") : s;
 }
 
-bool is_mjcf_root(const XMLElement* el) {
-  const std::string_view name = el ? el->Name() : "";
-  return name == "mujoco" || name == "mujocoinclude";
-}
-
 }  // namespace
 
 MjcfSources::MjcfSources(std::shared_ptr<const SourceFile> model, const FileSystem& files, const ReadOptions& options)
@@ -146,12 +141,8 @@ const XMLElement* MjcfSources::include(const XMLElement* el, const std::vector<s
     usable = false;
     return nullptr;
   }
-  if (!is_mjcf_root(root)) {
-    report(rules::kParseError.id, rules::kParseError.default_severity, doc->element_span(root),
-           fmt::format("included file's root element is <{}>, expected <mujoco>", root->Name()));
-    usable = false;
-    return nullptr;
-  }
+  // MuJoCo inserts the children of an included file's root whatever the root is called
+  // (<mujoco>, <mujocoinclude>, or the section it holds, such as <worldbody>).
   return root;
 }
 
