@@ -54,6 +54,12 @@ class MimicLimitConflict final : public Rule {
         return fmt::format("[{}, {}] {}", format_number(from_model_units(low, unit)),
                            format_number(from_model_units(high, unit)), unit_symbol(unit));
       };
+      // The leader may move in another unit than its follower (a slide driving a hinge).
+      const Unit leader_unit = reference->lower->unit;
+      const auto leader_range = [&](double low, double high) {
+        return fmt::format("[{}, {}] {}", format_number(from_model_units(low, leader_unit)),
+                           format_number(from_model_units(high, leader_unit)), unit_symbol(leader_unit));
+      };
       const std::string convention = asset.format == SourceFormat::Usda
                                          ? fmt::format("q + {}·q_ref + {} = 0",
                                                        format_number(joint.mimic->multiplier.authored),
@@ -67,7 +73,7 @@ class MimicLimitConflict final : public Rule {
                       range(joint.lower->value, joint.upper->value)));
       d.note(reference->name.span,
              fmt::format("'{}' moves over {}; the mimic ({}) maps that to {}.", reference->name.text,
-                         range(reference->lower->value, reference->upper->value), convention,
+                         leader_range(reference->lower->value, reference->upper->value), convention,
                          range(mapped_low, mapped_high)));
       d.note("The joint limit then fights the mimic constraint: one of them is violated whenever the leader is near "
              "that end.");
@@ -84,11 +90,6 @@ class MimicLimitConflict final : public Rule {
         continue;
       }
       if (auto narrowed = narrowed_leader(asset, *reference, tolerance)) {
-        const Unit leader_unit = reference->lower->unit;
-        const auto leader_range = [&](double low, double high) {
-          return fmt::format("[{}, {}] {}", format_number(from_model_units(low, leader_unit)),
-                             format_number(from_model_units(high, leader_unit)), unit_symbol(leader_unit));
-        };
         d.note(reference->name.span,
                fmt::format("Every joint that follows '{}' can hold it over {}.", reference->name.text,
                            leader_range(narrowed->first, narrowed->second)));
