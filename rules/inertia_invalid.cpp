@@ -89,18 +89,9 @@ class InertiaInvalid final : public Rule {
   static double written_rounding(const Eigen::Matrix3d& inertia) {
     double slack = 0.0;
     for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j) {
-        if (inertia(i, j) == 0) continue;
-        // The shortest text that reads back as the value: "0.001437", "3.781e-07".
-        const std::string text = fmt::format("{}", std::fabs(inertia(i, j)));
-        const auto e = text.find_first_of("eE");
-        const std::string mantissa = text.substr(0, e);
-        const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
-        const auto dot = mantissa.find('.');
-        const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+      for (int j = i; j < 3; ++j)
         // Off-diagonal entries move the principal moments too, twice as much at most.
-        slack += (i == j ? 1.0 : 2.0) * 0.5 * std::pow(10.0, exponent - decimals);
-      }
+        slack += (i == j ? 1.0 : 2.0) * half_unit_in_last_digit(inertia(i, j));
     return slack;
   }
 

@@ -53,14 +53,11 @@ class UnitsAngleRadians final : public Rule {
   // radian value left unconverted (1.57, 0.785) is that only by chance (about 1 in 60 per bound).
   static bool converted_from_round_radians(double degrees) {
     if (degrees == 0) return true;
-    const std::string text = fmt::format("{}", std::fabs(degrees));
-    if (text.find_first_of("eE") != std::string::npos) return false;
-    const auto dot = text.find('.');
-    const int decimals = dot == std::string::npos ? 0 : static_cast<int>(text.size() - dot - 1);
     const double radians = radians_from_degrees(degrees);
-    const double half_digit = 0.5 * std::pow(10.0, -decimals);
-    return std::fabs(radians - std::round(radians * 100) / 100) <= radians_from_degrees(half_digit) * (1 + 1e-9);
+    return std::fabs(radians - std::round(radians * 100) / 100) <=
+           radians_from_degrees(half_unit_in_last_digit(degrees)) * (1 + 1e-9);
   }
+
 
   static std::string derivation(const Joint& joint, double max_magnitude) {
     const Quantity& lower = *joint.lower;

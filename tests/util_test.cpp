@@ -69,3 +69,11 @@ TEST_CASE("rule selection globs", "[util]") {
   CHECK_FALSE(selection.enabled("units-velocity-implausible"));
   CHECK_FALSE(selection.enabled("inertia-invalid"));
 }
+
+TEST_CASE("half a unit in the last written digit, from the shortest text of the value", "[util]") {
+  CHECK(assetlint::half_unit_in_last_digit(0.001437) == Approx(5e-7));
+  CHECK(assetlint::half_unit_in_last_digit(-4.58) == Approx(0.005));
+  CHECK(assetlint::half_unit_in_last_digit(3.781e-7) == Approx(5e-11));
+  CHECK(assetlint::half_unit_in_last_digit(44) == Approx(0.5));
+  CHECK(assetlint::half_unit_in_last_digit(0) == 0);
+}

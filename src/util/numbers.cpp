@@ -1,5 +1,7 @@
 #include "util/numbers.h"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -96,6 +98,17 @@ std::string format_number_at_most(double value, int significant) {
     if (auto back = parse_double(text); back && *back <= value + 1e-9 * std::fabs(value)) return text;
   }
   return format_number(value, 17);
+}
+
+double half_unit_in_last_digit(double value) {
+  if (value == 0) return 0.0;
+  const std::string text = fmt::format("{}", std::fabs(value));
+  const auto e = text.find_first_of("eE");
+  const std::string mantissa = text.substr(0, e);
+  const int exponent = e == std::string::npos ? 0 : std::stoi(text.substr(e + 1));
+  const auto dot = mantissa.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+  return 0.5 * std::pow(10.0, exponent - decimals);
 }
 
 std::size_t columns(std::string_view text) {

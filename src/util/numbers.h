@@ -24,6 +24,11 @@ std::string format_number_rounded_up(double value, int significant);
 // Like format_number, but never above `value`.
 std::string format_number_at_most(double value, int significant = 6);
 
+// Half a unit in the last digit of the shortest text that reads back as `value` ("0.001437"
+// → 5e-7, "3.781e-07" → 5e-11, "44" → 0.5): how far rounding to the written digits can have
+// moved a number typed by hand. 0 for 0.
+double half_unit_in_last_digit(double value);
+
 // Width on screen: code points, not bytes ("N·m", "μ").
 std::size_t columns(std::string_view text);
 

@@ -118,6 +118,14 @@ Joint* joint_named(Asset& asset, std::string_view name) {
   return it == asset.joints.end() ? nullptr : &*it;
 }
 
+// MuJoCo damps a joint with its actuators' kv and the joint's own damping alike. One literal
+// stays as written (a fix can rewrite it); two make a sum no single literal holds.
+OptQuantity plus_joint_damping(const OptQuantity& actuator, const Joint& joint) {
+  if (!joint.joint_damping || joint.joint_damping->value <= 0) return actuator;
+  if (!actuator || actuator->value == 0) return joint.joint_damping;
+  return Quantity::unauthored(actuator->value + joint.joint_damping->value, actuator->unit);
+}
+
 }  // namespace
 
 void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler,
@@ -204,15 +212,7 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
       if (p.bias_velocity.attr || p.bias_velocity.value != 0)
         drive.damping = quantity(p.bias_velocity, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter,
                                  g * g, values);
-      // MuJoCo damps the joint with the actuator's kv and the joint's own damping alike.
-      if (joint->joint_damping && joint->joint_damping->value > 0) {
-        if (!drive.damping || drive.damping->value == 0) {
-          drive.damping = joint->joint_damping;
-        } else {
-          // Two literals make up the damping: no single one to rewrite.
-          drive.damping = Quantity::unauthored(drive.damping->value + joint->joint_damping->value, drive.damping->unit);
-        }
-      }
+      drive.damping = plus_joint_damping(drive.damping, *joint);
     }
     if (force_limited && p.forcerange) drive.max_force = range_bound(p.forcerange, "forcerange", force_unit, std::abs(g), values);
     joint->drive = std::move(drive);
@@ -239,7 +239,7 @@ void add_dampers(const std::vector<Damper>& dampers, Asset& asset) {
       drive.type_span = damper.span;
       drive.stiffness = Quantity::unauthored(0, is_angular(joint.type) ? Unit::NewtonMeterPerRadian : Unit::NewtonPerMeter);
       const double joint_damping = joint.joint_damping ? joint.joint_damping->value : 0.0;
-      drive.damping = joint_damping > 0 ? Quantity::unauthored(kv.value + joint_damping, kv.unit) : kv;
+      drive.damping = plus_joint_damping(kv, joint);
       drive.max_force = damper.max_force;
       if (joint_damping > 0)
         drive.damping_origin = fmt::format("{}: kv {}, plus the joint's damping {}: {}", damper.label,
