@@ -34,6 +34,7 @@ class ArmatureExcessive final : public Rule {
     const double factor = rule_option(info_, settings, "max_ratio");
     const double flywheel = rule_option(info_, settings, "flywheel_ratio");
     const double max_time_constant = rule_option(info_, settings, "max_time_constant");
+    const double servo_armature = rule_option(info_, settings, "servo_armature");
     const DriveModel model(asset, settings);
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || !joint.armature || joint.armature->value <= 0) continue;
@@ -46,7 +47,7 @@ class ArmatureExcessive final : public Rule {
       const double ratio = armature / moved.value;
       if (ratio <= factor) continue;
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
-      Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, model.spring_drive(joint)};
+      Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, servo_armature, model.spring_drive(joint)};
       c.damping = damping_on(asset, joint, c.driven);
       c.max_time_constant = max_time_constant;
       if (crutch(c)) c.shared = shared_by_a_steady_drive(model, asset, joint);
@@ -113,6 +114,7 @@ class ArmatureExcessive final : public Rule {
     double ratio;
     double factor;
     double flywheel;
+    double servo_armature;  // kg·m²: what a small smart servo reflects; a hinge's armature up to it is no flywheel
     std::optional<DrivenJoint> driven;
     const Joint* shared = nullptr;  // a steady drive with the same armature literal
     const Joint* motor_literal = nullptr;  // passive: an actuated joint whose armature is the same literal
@@ -125,7 +127,9 @@ class ArmatureExcessive final : public Rule {
     const char* unit() const { return is_angular(joint.type) ? "kg·m²" : "kg"; }
     // Far above everything the joint moves: the drive turns a flywheel.
     // Not when part of the load is left out: the ratio then overstates the armature's share.
-    bool dwarfs() const { return !moved.lighter && !moved.partial && ratio > flywheel; }
+    bool dwarfs() const { return !moved.lighter && !moved.partial && ratio > flywheel && !servo_sized(); }
+    // A hinge armature a real servo at the joint reflects: a light load makes the ratio large, not the rotor.
+    bool servo_sized() const { return is_angular(joint.type) && armature <= servo_armature; }
   };
 
   // The damping that acts on the joint's speed: its drive's (MuJoCo: kv·G² plus the joint's own
@@ -323,6 +327,11 @@ class ArmatureExcessive final : public Rule {
                                            times, c.moved.lighter ? "the lighter link's inertia" : "what the joint moves",
                                            format_number(c.factor)));
     d.note(moved_text(c));
+    if (!c.moved.lighter && !c.moved.partial && c.ratio > c.flywheel && c.servo_sized())
+      d.note(fmt::format("Above flywheel_ratio, but within servo_armature = {} kg·m², what a small smart servo at the "
+                         "joint reflects (a Dynamixel XL330's 1.7e-8 kg·m² rotor behind its 288:1 gear): a load this "
+                         "light makes the ratio large, not the rotor.",
+                         format_number(c.servo_armature)));
     if (c.moved.partial && crutch(c))
       d.note("On Mᵢᵢ alone its drive would be past the step's bound without it, but what the joint also turns adds "
              "inertia the file does not give: whether the drive needs the armature is not judged. Declare the motor to "
@@ -474,6 +483,9 @@ class ArmatureExcessive final : public Rule {
                    "mimic-coupled gripper drive)"},
                   {"flywheel_ratio", 10000.0,
                    "warn when the armature is above this multiple of everything the joint moves (a flywheel)"},
+                  {"servo_armature", 0.0014,
+                   "a hinge armature up to this (kg·m²) is what a small smart servo reflects (Dynamixel XL330: "
+                   "1.7e-8 kg·m² × 288²) and is never judged a flywheel, however light the load"},
                   {"max_time_constant", 0.2,
                    "no flywheel when the joint's damping settles its speed, armature included, within this many "
                    "seconds"}}};

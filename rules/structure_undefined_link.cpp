@@ -25,9 +25,15 @@ class StructureUndefinedLink final : public Rule {
   void check(const Asset& asset, const Settings&, Reporter& out) const override {
     const bool urdf = asset.format == SourceFormat::Urdf;
     std::vector<std::string_view> undefined_parents, undefined_children;
+    // USD: a body that no layer read defines may be defined in one that could not be read;
+    // layer-unresolved names the joints this check skipped.
+    const auto undefined = [&](const Joint& joint, int side) {
+      const Name& link = side == 0 ? joint.parent : joint.child;
+      return !link.text.empty() && !asset.side_link(joint, side) && !asset.may_be_unread(link.text);
+    };
     for (const Joint& joint : asset.joints) {
-      if (!joint.parent.text.empty() && !asset.side_link(joint, 0)) undefined_parents.push_back(joint.parent.text);
-      if (!joint.child.text.empty() && !asset.side_link(joint, 1)) undefined_children.push_back(joint.child.text);
+      if (undefined(joint, 0)) undefined_parents.push_back(joint.parent.text);
+      if (undefined(joint, 1)) undefined_children.push_back(joint.child.text);
     }
     // One undefined parent, never a child, hanging one joint: the attachment point of a
     // fragment meant to be included into a larger robot.
@@ -39,7 +45,7 @@ class StructureUndefinedLink final : public Rule {
           // USD: no body, or a static prim, anchors the joint to the world; MJCF: the worldbody.
           if (!urdf) continue;
           out.report(link->span, fmt::format("{} names no {} link", joint_label(joint), role));
-        } else if (!asset.side_link(joint, link == &joint.parent ? 0 : 1)) {
+        } else if (undefined(joint, link == &joint.parent ? 0 : 1)) {
           Diagnostic& d = out.report(link->span, fmt::format("{} link '{}' of {} is not defined", role, link->text,
                                                              joint_label(joint)));
           if (!urdf) continue;

@@ -43,6 +43,23 @@ bool round_value(double authored, double placeholder) {
   return leading < 10;
 }
 
+// `value` with at most `digits` significant digits, to a relative 1e-4 (a float written back
+// by a converter keeps about seven).
+bool few_digits(double value, int digits) {
+  if (!(value > 0) || !std::isfinite(value)) return false;
+  const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(value)));
+  return std::abs(std::round(value * scale) / scale - value) <= 1e-4 * value;
+}
+
+// A linear speed that is a short number times 180/π: a limit in rad/s that a converter
+// turned into deg/s as if the joint turned (859.4367 = 15 × 180/π).
+std::optional<double> degrees_of_radians(const Joint& joint, double authored) {
+  if (is_angular(joint.type)) return std::nullopt;
+  const double radians = authored * std::numbers::pi / 180.0;
+  if (authored == std::round(authored) || !few_digits(radians, 3)) return std::nullopt;
+  return radians;
+}
+
 // What one joint's velocity limit looks like on its own.
 struct Verdict {
   const Joint* joint = nullptr;
@@ -53,6 +70,7 @@ struct Verdict {
   std::optional<Unit> reading;     // the unit that makes the crossing time plausible
   double meant = 0;                // the value read in that unit, model units
   double meant_time = 0;
+  std::optional<double> from_radians;  // the rad/s value a converter turned into deg/s
 };
 
 class UnitsVelocityImplausible final : public Rule {
@@ -83,7 +101,8 @@ class UnitsVelocityImplausible final : public Rule {
       const Verdict& first = verdicts.front();
       const Quantity& velocity = *first.joint->velocity;
       const std::string also = others_note(verdicts);
-      if (first.fast && round_value(velocity.authored, placeholder)) {
+      const bool exporter_default = first.fast && on_every_kind_of_joint(asset, *first.joint, velocities, movable_joints);
+      if (first.fast && (round_value(velocity.authored, placeholder) || exporter_default)) {
         // A mimic's own limit is mimic-max-velocity's verdict (Robotiq's 10000 deg/s): one per line.
         if (std::all_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.joint->is_mimic(); }))
           continue;
@@ -92,15 +111,26 @@ class UnitsVelocityImplausible final : public Rule {
         Diagnostic& d = out.report(velocity.span, Severity::Info,
                                    fmt::format("velocity limit {} of {} is a placeholder, not a measured limit",
                                                describe(velocity), joint_label(*first.joint)));
-        d.note(fmt::format("At that speed the joint would cross {} in {} (less than {}); a round value that fast "
-                           "is a default nobody replaced, not a unit mistake.",
-                           first.range_text, seconds(first.time), seconds(min_time)));
+        if (exporter_default)
+          d.note(fmt::format("At that speed the joint would cross {} in {} (less than {}), but every movable joint, "
+                             "turning and sliding alike, carries the same {}: a default written without a unit in "
+                             "mind, not a unit mistake.",
+                             first.range_text, seconds(first.time), seconds(min_time),
+                             format_number(velocity.authored)));
+        else
+          d.note(fmt::format("At that speed the joint would cross {} in {} (less than {}); a round value that fast "
+                             "is a default nobody replaced, not a unit mistake.",
+                             first.range_text, seconds(first.time), seconds(min_time)));
         if (!also.empty()) d.note(also);
         d.note("Set the joint's real maximum speed from the data sheet; no value is proposed.");
         continue;
       }
       if (first.gripper) {
         report_fast_gripper(verdicts, min_time, settings, out);
+        continue;
+      }
+      if (first.from_radians) {
+        report_converted_from_radians(verdicts, also, min_time, out);
         continue;
       }
       const bool any_reading = std::any_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.reading.has_value(); });
@@ -167,6 +197,7 @@ class UnitsVelocityImplausible final : public Rule {
     } else if (v.time <= max_time) {
       return std::nullopt;
     }
+    if (v.fast && (v.from_radians = degrees_of_radians(joint, velocity.authored))) return v;
     const std::optional<Unit> reading = v.fast ? faster_reading(velocity.unit) : slower_reading(velocity.unit);
     if (reading) {
       const double meant = to_model_units(velocity.authored, *reading);
@@ -217,6 +248,37 @@ class UnitsVelocityImplausible final : public Rule {
     d.note("The simulated fingers strike the object far harder than the real ones. Take the finger speed from the data "
            "sheet, or give a [gripper] spec (stroke_m, finger_speed_m_s) for joint-max-velocity to judge it; no value is "
            "proposed.");
+  }
+
+  // The same value on every movable joint (at least three), turning and sliding ones among them:
+  // one number typed for all of them, read as rad/s on some and m/s on others.
+  static bool on_every_kind_of_joint(const Asset& asset, const Joint& joint, const SharedValues& velocities,
+                                     std::size_t movable_joints) {
+    if (movable_joints < 3 || velocities.others(joint) + 1 < movable_joints) return false;
+    bool angular = false, linear = false;
+    for (const Joint& other : asset.joints) {
+      if (!is_single_dof(other.type) || !other.velocity) continue;
+      (is_angular(other.type) ? angular : linear) = true;
+    }
+    return angular && linear;
+  }
+
+  // The linear limit is a rad/s value multiplied by 180/π: the unit is not wrong by a factor
+  // that a reading fixes, so no value is proposed.
+  static void report_converted_from_radians(const std::vector<Verdict>& verdicts, const std::string& also,
+                                            double min_time, Reporter& out) {
+    const Verdict& first = verdicts.front();
+    const Quantity& velocity = *first.joint->velocity;
+    Diagnostic& d = out.report(velocity.span, fmt::format("velocity limit {} of {} is implausibly fast",
+                                                          describe(velocity), joint_label(*first.joint)));
+    d.note(fmt::format("It would cross {} in {} (less than {}).", first.range_text, seconds(first.time),
+                       seconds(min_time)));
+    if (!also.empty()) d.note(also);
+    d.note(fmt::format("It is {} × 180/π: a limit of {} converted from radians to degrees as if the joint turned. A "
+                       "sliding joint's limit is a distance per second, so the conversion only made it {}× larger.",
+                       format_number(*first.from_radians, 4), format_number(*first.from_radians, 4),
+                       format_number(180.0 / std::numbers::pi, 4)));
+    d.note("Write the joint's real maximum speed from the data sheet; no value is proposed.");
   }
 
   static std::string others_note(const std::vector<Verdict>& verdicts) {

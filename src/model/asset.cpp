@@ -1,5 +1,6 @@
 #include "model/asset.h"
 
+#include <algorithm>
 #include <functional>
 
 namespace assetlint {
@@ -79,6 +80,13 @@ const Link* Asset::side_link(const Joint& joint, int side) const {
       return link == NameIndex::kNoLink ? nullptr : &links[link];
     }
   return find_link(side == 0 ? joint.parent.text : joint.child.text);
+}
+
+bool Asset::may_be_unread(std::string_view path) const {
+  return std::any_of(unread_scopes.begin(), unread_scopes.end(), [&](const std::string& scope) {
+    return scope.empty() || path == scope ||
+           (path.starts_with(scope) && path.size() > scope.size() && path[scope.size()] == '/');
+  });
 }
 
 void Asset::index_names() {

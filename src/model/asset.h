@@ -220,6 +220,10 @@ struct Asset {
   std::vector<Joint> joints;
   Scene scene;
   std::vector<InheritedLiteral> inherited_literals;  // in (file, offset) order
+  // USD: prim paths whose opinions a layer that could not be read would have brought ("" for a
+  // sublayer: the whole stage). A body named under one may be defined there, so no rule may
+  // call it undefined.
+  std::vector<std::string> unread_scopes;
 
   // The literal of more than one use that `span` overlaps, if any.
   const InheritedLiteral* shared_literal_at(const Span& span) const;
@@ -244,6 +248,8 @@ struct Asset {
   // The link a joint names as parent (side 0) or child (side 1); nullptr when none is
   // defined. Resolved once per joint by index_names(), a lookup by name otherwise.
   const Link* side_link(const Joint& joint, int side) const;
+  // Whether a prim at `path` may be defined in a layer that could not be read.
+  bool may_be_unread(std::string_view path) const;
   // Builds the name index; call again after adding, removing or renaming links or joints.
   void index_names();
   const SourceFile& source(FileId id) const { return *sources.at(id); }

@@ -127,21 +127,77 @@ class UrdfReader {
     return false;
   }
 
-  // An unexpanded `${…}` or `$(…)` means the file is xacro source: its values are not values yet,
-  // so nothing in it can be judged. The first one is a parse error.
+  // An unexpanded `${…}` or `$(…)` in a value means the file is xacro source: its values are not
+  // values yet, so nothing in it can be judged. The first one is a parse error. In a file name
+  // (a mesh, a texture) urdfdom keeps the text as written and reads the rest of the file, so
+  // the file is checked and the names that no consumer can resolve get one warning.
   bool find_xacro_expression() {
+    std::vector<const xml::XmlAttributeSpan*> file_names;
     for (const Element& el : doc_.scan().tags) {
       for (const xml::XmlAttributeSpan& a : el.attributes) {
         const std::string_view value = doc_.value(a);
-        if (value.find("${") != std::string_view::npos || value.find("$(") != std::string_view::npos) {
-          parse_error(xml::value_span(file_, kFile, a),
-                      fmt::format("unexpanded xacro expression '{}'; check the .xacro source instead (asset-lint expands it)", value));
-          return true;
+        if (value.find("${") == std::string_view::npos && value.find("$(") == std::string_view::npos) continue;
+        if (a.name == "filename") {
+          file_names.push_back(&a);
+          continue;
         }
+        parse_error(xml::value_span(file_, kFile, a),
+                    fmt::format("unexpanded xacro expression '{}'; check the .xacro source instead (asset-lint expands it)", value));
+        return true;
       }
     }
+    if (!file_names.empty()) report_unexpanded_file_names(file_names);
     report_stray_xacro_elements();
     return false;
+  }
+
+  void report_unexpanded_file_names(const std::vector<const xml::XmlAttributeSpan*>& names) {
+    const std::string_view first = doc_.value(*names.front());
+    Diagnostic finding{std::string(rules::kXacroUnexpanded.id), rules::kXacroUnexpanded.default_severity,
+                       xml::value_span(file_, kFile, *names.front()),
+                       fmt::format("unexpanded xacro expression '{}' in a file name; no URDF reader expands it",
+                                   first_expression(first)),
+                       std::nullopt, {}};
+    finding.note(fmt::format("The file name is '{}'.", first));
+    if (names.size() > 1) {
+      std::string lines;
+      for (std::size_t i = 1; i < names.size() && i <= 5; ++i)
+        lines += fmt::format("{}{}", i > 1 ? ", " : "", xml::value_span(file_, kFile, *names[i]).line);
+      finding.note(fmt::format("{} more file name{} hold one (line{} {}{}).", names.size() - 1,
+                               names.size() == 2 ? "" : "s", names.size() == 2 ? "" : "s", lines,
+                               names.size() > 6 ? ", …" : ""));
+    }
+    finding.note("urdfdom keeps the name as written; RViz, Gazebo and Isaac Sim's URDF importer then look for a file "
+                 "of that literal name and find none, so the mesh, and any collider made from it, is missing from the "
+                 "robot. The rest of the file is checked.");
+    const std::string_view find = "$(find ";
+    const auto at = first.find(find);
+    const auto close = at == std::string_view::npos ? at : first.find(')', at);
+    if (close != std::string_view::npos) {
+      const std::string_view package = trim(first.substr(at + find.size(), close - at - find.size()));
+      finding.note(fmt::format("Expand the xacro source again, or name the file through its package: "
+                               "'package://{}{}'.",
+                               package, first.substr(close + 1)));
+    } else {
+      finding.note("Expand the xacro source again.");
+    }
+    result_.diagnostics.push_back(std::move(finding));
+  }
+
+  // The first `${…}` or `$(…)` in `text`, up to its closing bracket (the rest of the text when
+  // it has none), cut at 40 characters.
+  static std::string first_expression(std::string_view text) {
+    const std::size_t a = text.find("${"), b = text.find("$(");
+    const std::size_t start = std::min(a, b);
+    const char close = start == a ? '}' : ')';
+    const std::size_t end = text.find(close, start);
+    std::string expression(text.substr(start, end == std::string_view::npos ? end : end - start + 1));
+    if (expression.size() > 40) expression = expression.substr(0, 39) + "…";
+    return expression;
+  }
+
+  static bool xacro_definition(std::string_view element) {
+    return element == "xacro:property" || element == "xacro:arg" || element == "xacro:macro";
   }
 
   // Without expressions, an <xacro:…> element is a leftover in an expanded URDF: urdfdom and the
@@ -169,9 +225,18 @@ class UrdfReader {
                                  elements.size() == 2 ? "" : "s", elements.size() == 2 ? "" : "s", lines,
                                  elements.size() > 6 ? ", …" : ""));
       }
-      finding.note("urdfdom, ROS and simulator importers ignore elements they do not know: whatever this xacro "
-                   "element would have produced is missing from the robot. The rest of the file is checked.");
-      finding.note("Expand the xacro source again, or delete the element if nothing is missing.");
+      if (xacro_definition(name)) {
+        // A definition produces nothing where it stands; what uses it would be reported itself
+        // (a ${…} in a value, a macro call element).
+        finding.severity = Severity::Info;
+        finding.note("urdfdom, ROS and simulator importers ignore elements they do not know. A definition produces "
+                     "nothing by itself and nothing in the file uses it, so the robot lacks nothing.");
+        finding.note("Delete the element.");
+      } else {
+        finding.note("urdfdom, ROS and simulator importers ignore elements they do not know: whatever this xacro "
+                     "element would have produced is missing from the robot. The rest of the file is checked.");
+        finding.note("Expand the xacro source again, or delete the element if nothing is missing.");
+      }
       result_.diagnostics.push_back(std::move(finding));
     }
   }

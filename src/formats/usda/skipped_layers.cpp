@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <string_view>
 
 namespace assetlint::usda {
@@ -49,9 +50,15 @@ std::vector<std::string> lost_checks(const Asset& asset, const std::string& scop
   std::size_t joints_in_scope = 0;
   std::vector<std::string> massless_driven;
   std::vector<std::string> massless_links;
+  std::vector<std::string> unlinked_joints, undefined_bodies;
   for (const Joint& joint : asset.joints) {
     if (!under(joint.name.text, scope) && !under(joint.parent.text, scope) && !under(joint.child.text, scope)) continue;
     ++joints_in_scope;
+    for (const Name* body : {&joint.parent, &joint.child})
+      if (!body->text.empty() && under(body->text, scope) && !asset.find_link(body->text)) {
+        add_unique(unlinked_joints, joint.name.text);
+        add_unique(undefined_bodies, body->text);
+      }
     if (!joint.drive) continue;
     bool lacking = false;
     for (const Name* body : {&joint.parent, &joint.child}) {
@@ -64,6 +71,10 @@ std::vector<std::string> lost_checks(const Asset& asset, const std::string& scop
     }
     if (lacking) add_unique(massless_driven, joint.name.text);
   }
+  if (!undefined_bodies.empty())
+    notes.push_back(fmt::format("structure-undefined-link not checked for {}: no layer read defines {}, which this "
+                                "layer may define",
+                                quoted_list(unlinked_joints), quoted_list(undefined_bodies)));
   if (joints_in_scope == 0) {
     if (!expect_joints) return notes;
     notes.push_back(fmt::format("no joint {} was read: the joint, drive, mimic and inertia rules checked nothing there",
@@ -76,18 +87,43 @@ std::vector<std::string> lost_checks(const Asset& asset, const std::string& scop
   return notes;
 }
 
+// Joints authored with `def` under `scope` that are not on the stage because an ancestor has
+// only `over`s: the layer that defines the ancestor may be the one not read.
+std::optional<std::string> hidden_joints(const Stage& stage, const std::string& scope) {
+  std::vector<std::string> joints, parents;
+  for (const ComposedPrim& prim : stage.prims) {
+    if (!prim.defined || prim.type_name.find("Joint") == std::string::npos || !under(prim.path, scope)) continue;
+    for (std::size_t up = prim.parent; up != static_cast<std::size_t>(-1); up = stage.prims[up].parent)
+      if (!stage.prims[up].defined) {
+        add_unique(joints, prim.path);
+        add_unique(parents, stage.prims[up].path);
+        break;
+      }
+  }
+  if (joints.empty()) return std::nullopt;
+  return fmt::format("{} joint{} not read ({}): {} defined in no layer read (only `over`s), which this layer may "
+                     "define",
+                     joints.size(), joints.size() == 1 ? "" : "s", quoted_list(joints),
+                     parents.size() == 1 ? fmt::format("'{}' is", parents.front())
+                                         : fmt::format("{} are", quoted_list(parents)));
+}
+
 }  // namespace
 
 void weigh_skipped_arcs(const Stage& stage, ReadResult& result) {
   for (const Stage::SkippedArc& arc : stage.skipped) {
     if (arc.diagnostic >= result.diagnostics.size()) continue;
+    if (std::find(result.asset.unread_scopes.begin(), result.asset.unread_scopes.end(), arc.scope) ==
+        result.asset.unread_scopes.end())
+      result.asset.unread_scopes.push_back(arc.scope);
     bool expect_joints = true;
     if (!arc.scope.empty()) {
       const ComposedPrim* prim = stage.find(arc.scope);
       if (!prim || !physics_prim(*prim)) continue;
       expect_joints = prim->parent == static_cast<std::size_t>(-1) || prim->type_name.find("Joint") != std::string::npos;
     }
-    const std::vector<std::string> lost = lost_checks(result.asset, arc.scope, expect_joints);
+    std::vector<std::string> lost = lost_checks(result.asset, arc.scope, expect_joints);
+    if (const auto hidden = hidden_joints(stage, arc.scope)) lost.push_back(*hidden);
     if (lost.empty()) continue;
     Diagnostic& d = result.diagnostics[arc.diagnostic];
     d.severity = std::max(d.severity, Severity::Warning);
