@@ -41,8 +41,10 @@ class DriveDampingRatio final : public Rule {
           !below && !driven->acceleration() && rate.solver == physics::Solver::MuJoCo &&
           rate.h() * physics::natural_frequency(driven->stiffness, inertia) > 1 &&
           physics::step_verdict(rate.integrator, rate.h(), mujoco_servo(*driven, inertia)) == physics::StepVerdict::Decays;
-      // A load the inertia leaves out lowers the true ratio: "too high" is then unproven.
-      const bool load_left_out = !below && joint.hidden_load;
+      // A load the inertia leaves out lowers the true ratio: "too high" is then unproven. A loop
+      // or coupling also brings the damping of the joints it turns, through a geometry the file
+      // does not give: then "too low" is unproven as well. A hanging body adds only inertia.
+      const bool load_left_out = joint.hidden_load && (!below || !joint.hidden_load->rope);
       // Far above critical the drive is a first-order lag: "sluggish" is a claim about how long
       // the joint takes to follow, and a short time constant refutes it.
       const double time_constant =
@@ -75,7 +77,11 @@ class DriveDampingRatio final : public Rule {
                                                                    : joint.name.span;
       Diagnostic& d = out.report(
           at, info_only ? Severity::Info : info_.default_severity,
-          load_left_out ? fmt::format("drive of {}: damping ratio {} on the joint alone is above {}; with its load it is lower",
+          load_left_out && below
+              ? fmt::format("drive of {}: damping ratio {} below {} on the joint alone; its load adds inertia and "
+                            "damping",
+                            short_name(joint), format_number(ratio, 3), format_number(low))
+          : load_left_out ? fmt::format("drive of {}: damping ratio {} on the joint alone is above {}; with its load it is lower",
                                       short_name(joint), format_number(ratio, 3), format_number(high))
           : friction_stops_ringing
               ? fmt::format("drive of {}: damping ratio {} is below {}, but its frictionloss stops the ringing",
@@ -135,6 +141,12 @@ class DriveDampingRatio final : public Rule {
                    ? fmt::format("The drive's inertia is a lower bound: {}, which its M₀ᵢᵢ leaves out. The ratio with "
                                  "the load hanging is lower, "
                                  "by how much the file cannot tell; no fix is offered.",
+                                 joint.hidden_load->what)
+                   : below
+                   ? fmt::format("The drive's inertia is incomplete: {}, which its M₀ᵢᵢ (every other joint held) "
+                                 "leaves out. Those joints add inertia, which lowers the ratio, and their own damping, "
+                                 "which raises it, each through the loop's geometry: whether the drive rings is not "
+                                 "judged, and no fix is offered.",
                                  joint.hidden_load->what)
                    : fmt::format("The drive's inertia is incomplete: {}, which its M₀ᵢᵢ (every other joint held) "
                                  "leaves out. The ratio with the joints it turns is "

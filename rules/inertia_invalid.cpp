@@ -227,6 +227,11 @@ class InertiaInvalid final : public Rule {
     else
       d.note("A link this heavy with so small a tensor is a point mass typed in: its rotation reacts to torques as if "
              "it weighed nothing.");
+    if (large && worst.g.floor_only && worst.g.box_density > 0)
+      d.note(fmt::format("Its joint frames give no size, but read as a uniform box the tensor spreads {} kg at {} "
+                         "kg/m³, lighter than any solid part ({} kg/m³, rigid foam).",
+                         format_number(in.mass.value, 4), format_number(worst.g.box_density, 2),
+                         format_number(physics::kGyrationMinSolidDensity)));
     if (severity != Severity::Info)
       d.note("Natural frequencies √(k/I) and damping ratios computed on it are wrong; the drive rules offer no fix from it.");
     for (std::size_t i = 1; i < found.size() && i <= 5; ++i)

@@ -102,7 +102,8 @@ class UnitsVelocityImplausible final : public Rule {
       const Quantity& velocity = *first.joint->velocity;
       const std::string also = others_note(verdicts);
       const bool exporter_default = first.fast && on_every_kind_of_joint(asset, *first.joint, velocities, movable_joints);
-      if (first.fast && (round_value(velocity.authored, placeholder) || exporter_default)) {
+      const std::optional<double> turns = first.fast ? whole_turns_per_second(*first.joint, velocity) : std::nullopt;
+      if (first.fast && (round_value(velocity.authored, placeholder) || exporter_default || turns)) {
         // A mimic's own limit is mimic-max-velocity's verdict (Robotiq's 10000 deg/s): one per line.
         if (std::all_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.joint->is_mimic(); }))
           continue;
@@ -111,7 +112,12 @@ class UnitsVelocityImplausible final : public Rule {
         Diagnostic& d = out.report(velocity.span, Severity::Info,
                                    fmt::format("velocity limit {} of {} is a placeholder, not a measured limit",
                                                describe(velocity), joint_label(*first.joint)));
-        if (exporter_default)
+        if (turns)
+          d.note(fmt::format("At that speed the joint would cross {} in {} (less than {}), but {} is {} turns per "
+                             "second, {} × 2π: a round number of turns written for \"no limit\", not a unit mistake.",
+                             first.range_text, seconds(first.time), seconds(min_time), describe(velocity),
+                             format_number(*turns), format_number(*turns)));
+        else if (exporter_default)
           d.note(fmt::format("At that speed the joint would cross {} in {} (less than {}), but every movable joint, "
                              "turning and sliding alike, carries the same {}: a default written without a unit in "
                              "mind, not a unit mistake.",
@@ -248,6 +254,15 @@ class UnitsVelocityImplausible final : public Rule {
     d.note("The simulated fingers strike the object far harder than the real ones. Take the finger speed from the data "
            "sheet, or give a [gripper] spec (stroke_m, finger_speed_m_s) for joint-max-velocity to judge it; no value is "
            "proposed.");
+  }
+
+  // An angular limit that is a round number of turns per second, at least 10 (628.3 rad/s =
+  // 100 × 2π; 36000 deg/s): a stand-in for "no limit" written in turns.
+  static std::optional<double> whole_turns_per_second(const Joint& joint, const Quantity& velocity) {
+    if (!is_angular(joint.type)) return std::nullopt;
+    const double turns = velocity.value / (2 * std::numbers::pi);
+    if (turns < 10 || !few_digits(turns, 1)) return std::nullopt;
+    return std::round(turns / std::pow(10.0, std::floor(std::log10(turns)))) * std::pow(10.0, std::floor(std::log10(turns)));
   }
 
   // The same value on every movable joint (at least three), turning and sliding ones among them:

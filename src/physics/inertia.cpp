@@ -68,6 +68,19 @@ double gyration_scale(const Asset& asset) {
   return std::max(1.0, box.diagonal().norm() / kGyrationReferenceSize);
 }
 
+namespace {
+
+// A uniform box with principal moments I₁ ≤ I₂ ≤ I₃ has sides a² = 6(I₂ + I₃ − I₁)/m and the
+// like; its density is m over a·b·c. 0 when the moments fit no box (a side of zero or less).
+double box_density(const Eigen::Vector3d& moments, double mass) {
+  const double i1 = moments[0], i2 = moments[1], i3 = moments[2];
+  const double a2 = 6 * (i2 + i3 - i1) / mass, b2 = 6 * (i1 + i3 - i2) / mass, c2 = 6 * (i1 + i2 - i3) / mass;
+  if (!(a2 > 0 && b2 > 0 && c2 > 0)) return 0;
+  return mass / std::sqrt(a2 * b2 * c2);
+}
+
+}  // namespace
+
 std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vector<Eigen::Vector3d>& joint_frames,
                                        const std::optional<Eigen::Vector3d>& sole_axis, double scale,
                                        double shape_reach) {
@@ -92,7 +105,10 @@ std::optional<Gyration> judge_gyration(const Inertial& inertial, const std::vect
     g.bound = shape_reach;
     g.from_shapes = true;
   }
-  if (g.largest > g.bound) g.verdict = Gyration::Verdict::TooLarge;
+  g.box_density = box_density(moments, mass);
+  g.floor_only = g.from_size && !g.from_shapes && kGyrationSizeFactor * g.spread <= kGyrationFloor * scale;
+  if (g.largest > g.bound && !(g.floor_only && g.box_density >= kGyrationMinSolidDensity))
+    g.verdict = Gyration::Verdict::TooLarge;
   else if (mass >= kGyrationMinMass && g.largest < kGyrationMinRadius) g.verdict = Gyration::Verdict::TooSmall;
   return g;
 }

@@ -36,6 +36,12 @@ bool pasted_tensor(const Eigen::Matrix3d& inertia);
 inline constexpr double kGyrationSizeFactor = 4.0;
 inline constexpr double kGyrationFloor = 0.1;        // m
 inline constexpr double kGyrationFixedBound = 0.5;   // m
+// Where the floor is the bound (the joint frames sit within a quarter of it from the COM, as on a
+// wheel whose steering and spin axes cross at its centre, so they say nothing of its size), a
+// tensor that a uniform box of this density or more reproduces is a solid's, not a template's:
+// rigid foam is about as light as an engineering part gets. A template's 0.1 kg·m² on 0.7 kg
+// implies a box of 0.8 kg/m³.
+inline constexpr double kGyrationMinSolidDensity = 50.0;  // kg/m³
 inline constexpr double kGyrationMinRadius = 0.002;  // m
 inline constexpr double kGyrationMinMass = 0.01;     // kg
 // The floor and the fixed bound are for robots up to this size across (m): a larger one's parts
@@ -58,6 +64,8 @@ struct Gyration {
   bool about_axis = false;  // `largest` is about the one axis the link turns about
   double scale = 1;         // gyration_scale of the asset
   bool from_shapes = false;  // the shapes' reach, larger than the other bounds, is the bound
+  double box_density = 0;    // kg/m³: the mass over the uniform box its principal moments imply (0: none fits)
+  bool floor_only = false;   // the joint frames sit within a quarter of the floor from the COM: no size from them
   std::string bound_text() const;  // "3 × 0.114 m, the farthest joint frame on the link from its COM" / …
 };
 

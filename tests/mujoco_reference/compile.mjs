@@ -23,7 +23,9 @@ if (!packageDir || models.length === 0) {
   process.exit(2);
 }
 const load = (await import(pathToFileURL(path.join(packageDir, 'dist', 'mujoco_wasm.js')).href)).default;
-const mj = await load();
+// MuJoCo prints its runtime warnings (a full contact buffer at the first step, …) on the
+// module's stdout, where this script writes its JSON: send them to stderr.
+const mj = await load({ print: (text) => process.stderr.write(`${text}\n`) });
 
 // The <include file=...> names in a text (MuJoCo resolves them against the model's directory).
 function includes(text) {

@@ -45,7 +45,7 @@ Param token_param(const Attr& attr, const char* name, std::size_t token, double 
   p.token = token;
   p.sign = sign;
   auto numbers = parse_doubles(attr.value ? attr.value : "");
-  if (!numbers || numbers->size() <= token) return Param{};  // MuJoCo fills missing entries with 0
+  if (!numbers || numbers->size() <= token) return Param{};  // not written here: the caller keeps what it had
   p.value = sign * (*numbers)[token];
   return p;
 }
@@ -63,9 +63,12 @@ void apply(const XMLElement* el, Params& p, Values& values) {
     if (Attr a = own(el, "biastype")) p.affine = trim(a.value) == "affine";
     if (Attr a = own(el, "gaintype")) p.gaintype = std::string(trim(a.value));
     if (Attr a = own(el, "gainprm"); a && values.numbers(a, "gainprm")) p.gain = token_param(a, "gainprm", 0, 1.0);
+    // MuJoCo reads as many entries as the element writes and keeps the rest from the class
+    // (xml_native_reader's ReadAttr without `exact`): biasprm="0 -250" under a class with
+    // "0 -50 -5" compiles to (0, -250, -5).
     if (Attr a = own(el, "biasprm"); a && values.numbers(a, "biasprm")) {
-      p.bias_position = token_param(a, "biasprm", 1, -1.0);
-      p.bias_velocity = token_param(a, "biasprm", 2, -1.0);
+      if (Param v = token_param(a, "biasprm", 1, -1.0); v.attr) p.bias_position = v;
+      if (Param v = token_param(a, "biasprm", 2, -1.0); v.attr) p.bias_velocity = v;
     }
   } else if (tag == "position") {
     if (Attr a = own(el, "kp"); a && values.numbers(a, "kp", 1)) p.gain = token_param(a, "kp", 0, 1.0);
