@@ -146,26 +146,26 @@ class DriveNaturalFrequency final : public Rule {
     }
 
     const std::optional<MujocoStep> mujoco = mujoco_step(driven);
-    if (mujoco && !driven.damping_known()) {
-      // Whether the step decays depends on the damping: no verdict without it.
-      Diagnostic& d = out.report(
-          at, Severity::Info,
-          fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, not judged: damping unknown",
-                      short_name(joint), format_number(nf, 4), format_number(bound, 4)));
+    // An info past the bound: the derivation and the bound, then why it is not an error.
+    const auto info = [&](std::string message) -> Diagnostic& {
+      Diagnostic& d = out.report(at, Severity::Info, std::move(message));
       d.note(derivation(driven, nf));
       d.note(bound_text(rate, h_nf));
+      return d;
+    };
+    if (mujoco && !driven.damping_known()) {
+      // Whether the step decays depends on the damping: no verdict without it.
+      Diagnostic& d = info(
+          fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, not judged: damping unknown",
+                      short_name(joint), format_number(nf, 4), format_number(bound, 4)));
       d.note(fmt::format("Whether {} damps the spring's unresolved mode depends on the damping, which is unknown: {}.",
                          physics::integrator_name(rate.integrator), driven.drive->damping_unknown));
       return;
     }
     if (mujoco && mujoco->verdict() == physics::StepVerdict::Decays) {
-      Diagnostic& d = out.report(
-          at, Severity::Info,
-          fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, damped stably by {}",
-                      short_name(joint), format_number(nf, 4), format_number(bound, 4),
-                      physics::integrator_name(rate.integrator)));
-      d.note(derivation(driven, nf));
-      d.note(bound_text(rate, h_nf));
+      Diagnostic& d = info(fmt::format("drive of {}: natural frequency {} rad/s > MuJoCo bound {} rad/s, damped stably by {}",
+                                       short_name(joint), format_number(nf, 4), format_number(bound, 4),
+                                       physics::integrator_name(rate.integrator)));
       for (const std::string& note : mujoco->notes()) d.note(note);
       return;
     }
@@ -174,12 +174,9 @@ class DriveNaturalFrequency final : public Rule {
     // true nf is lower by an amount the file does not give, so past the bound is not established.
     const HiddenLoad* hidden = joint.hidden_load ? &*joint.hidden_load : nullptr;
     if (hidden) {
-      Diagnostic& d = out.report(
-          at, Severity::Info,
-          fmt::format("drive of {}: natural frequency {} rad/s > bound {} rad/s on the joint alone; its load lowers it",
-                      short_name(joint), format_number(nf, 4), format_number(bound, 4)));
-      d.note(derivation(driven, nf));
-      d.note(bound_text(rate, h_nf));
+      Diagnostic& d = info(fmt::format("drive of {}: natural frequency {} rad/s > bound {} rad/s on the joint alone; its "
+                                       "load lowers it",
+                                       short_name(joint), format_number(nf, 4), format_number(bound, 4)));
       d.note(hidden->span, fmt::format("I leaves out part of what the drive moves: {}. With it the natural frequency "
                                        "is lower, by how much the file cannot tell, so whether the drive is past the "
                                        "bound is not judged.",
