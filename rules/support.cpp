@@ -23,7 +23,8 @@ std::string describe(const Quantity& q, int significant) { return describe_writt
 std::string describe_written(const Quantity& q, double model_value, int significant) {
   if (q.scale == 1.0 || !q.span.valid()) return describe(model_value, q.unit, significant);
   const auto symbol = unit_symbol(model_unit(q.unit));
-  return fmt::format("{} (stage units; {}{}{})", format_number(q.authored_for(model_value), significant),
+  // The literal is scaled on its way to the model: a USD stage's units, an MJCF actuator's gear.
+  return fmt::format("{} in file units ({}{}{})", format_number(q.authored_for(model_value), significant),
                      format_number(model_value, significant), symbol.empty() ? "" : " ", symbol);
 }
 

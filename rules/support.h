@@ -12,10 +12,10 @@ namespace assetlint::rules {
 // sees it: "146.5 deg/s (2.556 rad/s)" or "5700 N·m/rad".
 std::string describe(double model_value, Unit file_unit, int significant = 4);
 // A value read from a file: on a scaled USD stage (metersPerUnit or kilogramsPerUnit ≠ 1)
-// the literal as written, then the SI/PhysX value: "300 (stage units; 3 m/s)".
+// the literal as written, then the SI/PhysX value: "300 in file units (3 m/s)".
 std::string describe(const Quantity& q, int significant = 4);
 
-// A new model value as it would be written into q's literal: "15 (stage units; 0.15 m/s)" on a
+// A new model value as it would be written into q's literal: "15 in file units (0.15 m/s)" on a
 // scaled stage, else like describe(model_value, q.unit).
 std::string describe_written(const Quantity& q, double model_value, int significant = 4);
 

@@ -232,9 +232,13 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
         c.skip(kSecondServo, element);
         continue;
       }
+      // The joint sees force = gain·ctrl clamped to forcerange, times the gear: the smaller bound.
       std::optional<double> bound;
       if (a["forcelimited"].get<bool>()) bound = force_bound(a["forcerange"], std::abs(g));
-      else if (a["ctrllimited"].get<bool>()) bound = force_bound(a["ctrlrange"], std::abs(g * a["gainprm"][0].get<double>()));
+      if (a["ctrllimited"].get<bool>()) {
+        const double by_control = force_bound(a["ctrlrange"], std::abs(g * a["gainprm"][0].get<double>()));
+        if (!bound || by_control < *bound) bound = by_control;
+      }
       effort_bound[&joint] = bound;
       if (bound) c.value("effort (motor)", element, *bound, joint.effort ? std::optional(joint.effort->value) : std::nullopt);
       else c.absent("effort (motor)", element, joint.effort);

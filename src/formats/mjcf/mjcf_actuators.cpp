@@ -222,11 +222,15 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
     return;
   }
   if (p.affine) return;  // an affine bias without a spring or damper term: not a drive
-  // A motor (force = gain·ctrl): the control range bounds the effort, the force range clamps it.
+  // A motor (force = gain·ctrl): the control range bounds the force, the force range clamps it,
+  // and the joint sees the smaller of the two through the gear (a gear of 10 with ctrlrange ±10
+  // and forcerange ±100 pushes at most 100 N, not 1000).
   OptQuantity effort;
   if (force_limited && p.forcerange) effort = range_bound(p.forcerange, "forcerange", force_unit, std::abs(g), values);
-  else if (ctrl_limited && p.ctrlrange)
-    effort = range_bound(p.ctrlrange, "ctrlrange", force_unit, std::abs(g * p.gain.value), values);
+  if (ctrl_limited && p.ctrlrange) {
+    OptQuantity by_control = range_bound(p.ctrlrange, "ctrlrange", force_unit, std::abs(g * p.gain.value), values);
+    if (by_control && (!effort || by_control->value < effort->value)) effort = by_control;
+  }
   if (effort && !joint->effort) joint->effort = effort;
 }
 
