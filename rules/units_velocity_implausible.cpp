@@ -43,21 +43,22 @@ bool round_value(double authored, double placeholder) {
   return leading < 10;
 }
 
-// `value` with at most `digits` significant digits, to a relative 1e-4 (a float written back
-// by a converter keeps about seven).
-bool few_digits(double value, int digits) {
-  if (!(value > 0) || !std::isfinite(value)) return false;
+// `value` rounded to `digits` significant digits, when it is that number to a relative 1e-4
+// (a float written back by a converter keeps about seven); nullopt otherwise.
+std::optional<double> short_number(double value, int digits) {
+  if (!(value > 0) || !std::isfinite(value)) return std::nullopt;
   const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(value)));
-  return std::abs(std::round(value * scale) / scale - value) <= 1e-4 * value;
+  const double rounded = std::round(value * scale) / scale;
+  if (std::abs(rounded - value) > 1e-4 * value) return std::nullopt;
+  return rounded;
 }
 
 // A linear speed that is a short number times 180/π: a limit in rad/s that a converter
 // turned into deg/s as if the joint turned (859.4367 = 15 × 180/π).
 std::optional<double> degrees_of_radians(const Joint& joint, double authored) {
   if (is_angular(joint.type)) return std::nullopt;
-  const double radians = authored * std::numbers::pi / 180.0;
-  if (authored == std::round(authored) || !few_digits(radians, 3)) return std::nullopt;
-  return radians;
+  if (authored == std::round(authored)) return std::nullopt;
+  return short_number(authored * std::numbers::pi / 180.0, 3);
 }
 
 // What one joint's velocity limit looks like on its own.
@@ -261,8 +262,8 @@ class UnitsVelocityImplausible final : public Rule {
   static std::optional<double> whole_turns_per_second(const Joint& joint, const Quantity& velocity) {
     if (!is_angular(joint.type)) return std::nullopt;
     const double turns = velocity.value / (2 * std::numbers::pi);
-    if (turns < 10 || !few_digits(turns, 1)) return std::nullopt;
-    return std::round(turns / std::pow(10.0, std::floor(std::log10(turns)))) * std::pow(10.0, std::floor(std::log10(turns)));
+    if (turns < 10) return std::nullopt;
+    return short_number(turns, 1);
   }
 
   // The same value on every movable joint (at least three), turning and sliding ones among them:

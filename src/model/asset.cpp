@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <functional>
 
+#include "util/slash_paths.h"
+
 namespace assetlint {
 
 const Link* Asset::find_link(std::string_view name) const {
@@ -83,10 +85,8 @@ const Link* Asset::side_link(const Joint& joint, int side) const {
 }
 
 bool Asset::may_be_unread(std::string_view path) const {
-  return std::any_of(unread_scopes.begin(), unread_scopes.end(), [&](const std::string& scope) {
-    return scope.empty() || path == scope ||
-           (path.starts_with(scope) && path.size() > scope.size() && path[scope.size()] == '/');
-  });
+  return std::any_of(unread_scopes.begin(), unread_scopes.end(),
+                     [&](const std::string& scope) { return path_under(path, scope); });
 }
 
 void Asset::index_names() {

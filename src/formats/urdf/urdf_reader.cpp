@@ -160,12 +160,10 @@ class UrdfReader {
                        std::nullopt, {}};
     finding.note(fmt::format("The file name is '{}'.", first));
     if (names.size() > 1) {
-      std::string lines;
-      for (std::size_t i = 1; i < names.size() && i <= 5; ++i)
-        lines += fmt::format("{}{}", i > 1 ? ", " : "", xml::value_span(file_, kFile, *names[i]).line);
-      finding.note(fmt::format("{} more file name{} hold one (line{} {}{}).", names.size() - 1,
-                               names.size() == 2 ? "" : "s", names.size() == 2 ? "" : "s", lines,
-                               names.size() > 6 ? ", …" : ""));
+      std::vector<std::uint32_t> lines;
+      for (std::size_t i = 1; i < names.size(); ++i) lines.push_back(xml::value_span(file_, kFile, *names[i]).line);
+      finding.note(fmt::format("{} more file name{} hold one {}.", lines.size(), lines.size() == 1 ? "" : "s",
+                               at_lines(lines)));
     }
     finding.note("urdfdom keeps the name as written; RViz, Gazebo and Isaac Sim's URDF importer then look for a file "
                  "of that literal name and find none, so the mesh, and any collider made from it, is missing from the "
@@ -182,6 +180,13 @@ class UrdfReader {
       finding.note("Expand the xacro source again.");
     }
     result_.diagnostics.push_back(std::move(finding));
+  }
+
+  // "(line 13)" or "(lines 13, 21, …)": where the other occurrences are, the first five named.
+  static std::string at_lines(const std::vector<std::uint32_t>& lines) {
+    std::string listed;
+    for (std::size_t i = 0; i < lines.size() && i < 5; ++i) listed += fmt::format("{}{}", i ? ", " : "", lines[i]);
+    return fmt::format("(line{} {}{})", lines.size() == 1 ? "" : "s", listed, lines.size() > 5 ? ", …" : "");
   }
 
   // The first `${…}` or `$(…)` in `text`, up to its closing bracket (the rest of the text when
@@ -218,12 +223,10 @@ class UrdfReader {
                          element_span(elements.front()),
                          fmt::format("<{}> left in an expanded URDF; URDF readers skip it", name), std::nullopt, {}};
       if (elements.size() > 1) {
-        std::string lines;
-        for (std::size_t i = 1; i < elements.size() && i <= 5; ++i)
-          lines += fmt::format("{}{}", i > 1 ? ", " : "", element_span(elements[i]).line);
-        finding.note(fmt::format("{} more <{}> element{} in the file (line{} {}{}).", elements.size() - 1, name,
-                                 elements.size() == 2 ? "" : "s", elements.size() == 2 ? "" : "s", lines,
-                                 elements.size() > 6 ? ", …" : ""));
+        std::vector<std::uint32_t> lines;
+        for (std::size_t i = 1; i < elements.size(); ++i) lines.push_back(element_span(elements[i]).line);
+        finding.note(fmt::format("{} more <{}> element{} in the file {}.", lines.size(), name,
+                                 lines.size() == 1 ? "" : "s", at_lines(lines)));
       }
       if (xacro_definition(name)) {
         // A definition produces nothing where it stands; what uses it would be reported itself

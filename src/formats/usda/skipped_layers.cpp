@@ -6,15 +6,12 @@
 #include <optional>
 #include <string_view>
 
+#include "util/slash_paths.h"
+
 namespace assetlint::usda {
 namespace {
 
 constexpr std::size_t kMostNamed = 4;
-
-bool under(std::string_view path, std::string_view scope) {
-  if (scope.empty()) return true;
-  return path == scope || (path.starts_with(scope) && path.size() > scope.size() && path[scope.size()] == '/');
-}
 
 // A prim whose own opinions the physics rules read: a joint, a body, a scene, an
 // articulation; or a root prim (a whole robot brought in by reference).
@@ -52,10 +49,12 @@ std::vector<std::string> lost_checks(const Asset& asset, const std::string& scop
   std::vector<std::string> massless_links;
   std::vector<std::string> unlinked_joints, undefined_bodies;
   for (const Joint& joint : asset.joints) {
-    if (!under(joint.name.text, scope) && !under(joint.parent.text, scope) && !under(joint.child.text, scope)) continue;
+    if (!path_under(joint.name.text, scope) && !path_under(joint.parent.text, scope) &&
+        !path_under(joint.child.text, scope))
+      continue;
     ++joints_in_scope;
     for (const Name* body : {&joint.parent, &joint.child})
-      if (!body->text.empty() && under(body->text, scope) && !asset.find_link(body->text)) {
+      if (!body->text.empty() && path_under(body->text, scope) && !asset.find_link(body->text)) {
         add_unique(unlinked_joints, joint.name.text);
         add_unique(undefined_bodies, body->text);
       }
@@ -92,7 +91,7 @@ std::vector<std::string> lost_checks(const Asset& asset, const std::string& scop
 std::optional<std::string> hidden_joints(const Stage& stage, const std::string& scope) {
   std::vector<std::string> joints, parents;
   for (const ComposedPrim& prim : stage.prims) {
-    if (!prim.defined || prim.type_name.find("Joint") == std::string::npos || !under(prim.path, scope)) continue;
+    if (!prim.defined || prim.type_name.find("Joint") == std::string::npos || !path_under(prim.path, scope)) continue;
     for (std::size_t up = prim.parent; up != static_cast<std::size_t>(-1); up = stage.prims[up].parent)
       if (!stage.prims[up].defined) {
         add_unique(joints, prim.path);
