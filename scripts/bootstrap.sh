@@ -4,17 +4,24 @@
 # when everything is there.
 set -euo pipefail
 
-packages=(
+# What CMakeLists.txt finds to build asset-lint (docs/ci.md's recipes install exactly these,
+# tests/ci_recipe_test.cpp holds them to it).
+build_packages=(
   build-essential cmake ninja-build pkg-config
   liburdfdom-dev libtinyxml2-dev libeigen3-dev libfmt-dev libcli11-dev
-  catch2 libtomlplusplus-dev nlohmann-json3-dev
+  libtomlplusplus-dev nlohmann-json3-dev
   libyaml-cpp-dev  # xacro.load_yaml in .xacro files
   libmujoco-dev
   libassimp-dev  # Collada collision meshes for `asset-lint verify`
   liblz4-dev  # binary USD (crate) layers compress their sections with LZ4
+)
+# What the test suite needs on top.
+test_packages=(
+  catch2
   librsvg2-bin  # rsvg-convert: the simulate test renders its SVG plot
   libxml2-utils  # xmllint: the JUnit report is validated against tests/schemas/junit.xsd
 )
+packages=("${build_packages[@]}" "${test_packages[@]}")
 # Fuzzing (fuzz/README.md) needs clang and libclang-rt-14-dev; the suite itself only replays
 # the fuzz regressions with the project's compiler, so they are not installed here.
 

@@ -70,9 +70,9 @@ std::vector<std::string> documented_commands(const std::vector<Block>& blocks) {
   return commands;
 }
 
-// The Debian packages each recipe's `apt-get install` names.
-std::vector<std::string> installed_packages(const std::vector<Block>& blocks) {
-  std::vector<std::string> packages;
+// The Debian packages each recipe's `apt-get install` names, one list per recipe.
+std::vector<std::vector<std::string>> recipe_packages(const std::vector<Block>& blocks) {
+  std::vector<std::vector<std::string>> recipes;
   for (const Block& block : blocks) {
     std::string text;
     for (const auto& line : block.lines) text += line + "\n";
@@ -80,10 +80,41 @@ std::vector<std::string> installed_packages(const std::vector<Block>& blocks) {
     if (at == std::string::npos) continue;
     std::istringstream words(text.substr(at + std::string("--no-install-recommends").size()));
     std::string word;
+    recipes.emplace_back();
     while (words >> word && word[0] != '-' && word.back() != ':')
-      if (word != "\\") packages.push_back(word);
+      if (word != "\\") recipes.back().push_back(word);
   }
+  return recipes;
+}
+
+std::vector<std::string> installed_packages(const std::vector<Block>& blocks) {
+  std::vector<std::string> packages;
+  for (const auto& recipe : recipe_packages(blocks)) packages.insert(packages.end(), recipe.begin(), recipe.end());
   return packages;
+}
+
+// The words of bash array `name=( … )` in `script`, comments left out.
+std::vector<std::string> bash_array(const std::string& script, const std::string& name) {
+  std::vector<std::string> words;
+  const auto start = script.find("\n" + name + "=(");
+  if (start == std::string::npos) return words;
+  std::istringstream in(script.substr(start + name.size() + 3));
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::string code = line.substr(0, line.find('#'));
+    std::istringstream tokens(code);
+    std::string word;
+    bool closed = false;
+    while (tokens >> word) {
+      if (word == ")") {
+        closed = true;
+        break;
+      }
+      words.push_back(word);
+    }
+    if (closed || trim(code) == ")") break;
+  }
+  return words;
 }
 
 // The assets (fixtures/ci): hand.urdf, whose mimic follower is limited below its gearing (a
@@ -274,6 +305,38 @@ TEST_CASE("docs/ci.md: the recipes' commands run as written in an asset reposito
   }
 }
 
+// The shipped hooks pass every format asset-lint reads: xacro, binary crate USD (.usdc) and MJCF
+// (.xml with a <mujoco> root), and leave other XML (a launch file) out without a word.
+TEST_CASE("pre-commit hooks: xacro, .usdc and MJCF are checked, other XML is passed over", "[ci-recipe][hooks]") {
+  if (!on_path("git") || !on_path("pre-commit")) {
+    WARN("git or pre-commit not installed; skipping the hooks test");
+    return;
+  }
+  AssetRepository repo;
+  namespace fs = std::filesystem;
+  const fs::path assets = repo.root() / "assets";
+  fs::copy(assetlint::test::fixtures_dir() / "xacro" / "demo_gripper_description", assets / "demo_gripper_description",
+           fs::copy_options::recursive);
+  fs::copy_file(assetlint::test::fixtures_dir() / "usdc" / "angular_near_miss.usd", assets / "near_miss.usdc");
+  fs::copy_file(assetlint::test::fixtures_dir() / "mjcf" / "robotiq_2f85" / "robotiq_2f85.xml", assets / "gripper.xml");
+  write_file(assets / "bringup.launch.xml", "<launch>\n  <node pkg=\"demo\" exec=\"demo\"/>\n</launch>\n");
+  const auto hooks = repo.dir().path() / "asset-lint";
+  fs::create_directories(hooks);
+  write_file(hooks / ".pre-commit-hooks.yaml", read_file(assetlint::test::source_dir() / ".pre-commit-hooks.yaml"));
+  REQUIRE(repo.run("cd " + shell_quote(hooks.string()) + " && " + kGit + "init -q && " + kGit + "add . && " + kGit +
+                   "commit -q -m hooks") == 0);
+  REQUIRE(repo.run(kGit + "add . && " + kGit + "commit -q -m formats") == 0);
+  CHECK(repo.run("timeout 180 pre-commit try-repo " + shell_quote(hooks.string()) + " asset-lint --all-files") == 1);
+  const std::string& out = repo.output;
+  INFO(out);
+  CHECK(out.find("assets/demo_gripper_description/urdf/demo_gripper_macro.xacro:19:31: error:") != std::string::npos);
+  CHECK(out.find("assets/gripper.xml:61:55: error:") != std::string::npos);
+  CHECK(out.find("assets/near_miss.usdc </gripper/finger_joint>: info:") != std::string::npos);
+  CHECK(out.find("assets/hand.urdf:14:") != std::string::npos);
+  CHECK(out.find("bringup.launch.xml") == std::string::npos);
+  CHECK(out.find("could not be read") == std::string::npos);
+}
+
 TEST_CASE("docs/ci.md: the recipes install packages the Debian archive has", "[ci-recipe]") {
   if (!on_path("apt-cache")) {
     WARN("apt-cache not available; skipping the check of the recipes' package names");
@@ -290,6 +353,26 @@ TEST_CASE("docs/ci.md: the recipes install packages the Debian archive has", "[c
         0);
   INFO("packages:" + names);
   CHECK(std::stoul(out) == packages.size());
+}
+
+TEST_CASE("docs/ci.md: the recipes install what scripts/bootstrap.sh builds with", "[ci-recipe]") {
+  const auto build = bash_array(read_file(assetlint::test::source_dir() / "scripts" / "bootstrap.sh"), "build_packages");
+  REQUIRE(build.size() >= 15);
+  CHECK(std::find(build.begin(), build.end(), "libmujoco-dev") != build.end());
+  const auto recipes = recipe_packages(fenced_blocks(read_file(assetlint::test::source_dir() / "docs" / "ci.md")));
+  REQUIRE(recipes.size() == 2);
+  for (const auto& recipe : recipes) {
+    for (const auto& package : build) {
+      INFO("bootstrap.sh builds with " << package);
+      CHECK(std::find(recipe.begin(), recipe.end(), package) != recipe.end());
+    }
+    // Beyond the build: only what a bare container needs to check the repository out.
+    for (const auto& package : recipe) {
+      INFO("a recipe installs " << package);
+      CHECK((std::find(build.begin(), build.end(), package) != build.end() || package == "git" ||
+             package == "ca-certificates"));
+    }
+  }
 }
 
 TEST_CASE("docs/ci.md: the git textconv recipe makes crate layers diff as USDA", "[ci-recipe][usdc]") {

@@ -38,6 +38,30 @@ bool mjcf_text(const fs::path& path) {
   return text && file_kind(path.string(), *text) == FileKind::Mjcf;
 }
 
+// What a directory walk does with a file it meets.
+enum class WalkVerdict { Check, BinaryUsd, Xacro, NotAnAsset };
+
+WalkVerdict walk_verdict(const fs::path& path) {
+  switch (file_kind(path.string())) {
+    case FileKind::Urdf:
+    case FileKind::Usda: return WalkVerdict::Check;
+    case FileKind::Usd:
+    case FileKind::BinaryUsd: {
+      // Text and crate layers are read, and an LFS pointer is reported as one (the gate would
+      // otherwise check nothing); other binary USD (.usdz packages) is counted as skipped.
+      const std::string head = head_of(path);
+      const bool readable = usd_kind(head) == FileKind::Usda || usdc::is_crate(head) || is_lfs_pointer(head);
+      return readable ? WalkVerdict::Check : WalkVerdict::BinaryUsd;
+    }
+    case FileKind::Mjcf:
+      // A .xml is an asset only when its root is <mujoco> (not launch files, not URDFs named .xml).
+      return extension_of(path.string()) != ".xml" || mjcf_text(path) ? WalkVerdict::Check : WalkVerdict::NotAnAsset;
+    case FileKind::Xacro: return WalkVerdict::Xacro;
+    case FileKind::Unsupported: break;
+  }
+  return WalkVerdict::NotAnAsset;
+}
+
 struct Walk {
   const fs::path& cwd;
   PathExpansion& out;
@@ -57,25 +81,11 @@ struct Walk {
   }
 
   void file(const fs::path& path) {
-    switch (file_kind(path.string())) {
-      case FileKind::Urdf:
-      case FileKind::Usda: found.push_back(spelled(path, cwd)); break;
-      case FileKind::Usd:
-      case FileKind::BinaryUsd: {
-        // Text and crate layers are read, and an LFS pointer is reported as one (the gate would
-        // otherwise check nothing); other binary USD (.usdz packages) is counted as skipped.
-        const std::string head = head_of(path);
-        if (usd_kind(head) == FileKind::Usda || usdc::is_crate(head) || is_lfs_pointer(head))
-          found.push_back(spelled(path, cwd));
-        else out.binary_usd.push_back(spelled(path, cwd));
-        break;
-      }
-      case FileKind::Mjcf:
-        // A .xml is an asset only when its root is <mujoco> (not launch files, not URDFs named .xml).
-        if (extension_of(path.string()) != ".xml" || mjcf_text(path)) found.push_back(spelled(path, cwd));
-        break;
-      case FileKind::Xacro: xacro.push_back(spelled(path, cwd)); break;
-      case FileKind::Unsupported: break;
+    switch (walk_verdict(path)) {
+      case WalkVerdict::Check: found.push_back(spelled(path, cwd)); break;
+      case WalkVerdict::BinaryUsd: out.binary_usd.push_back(spelled(path, cwd)); break;
+      case WalkVerdict::Xacro: xacro.push_back(spelled(path, cwd)); break;
+      case WalkVerdict::NotAnAsset: break;
     }
   }
 
@@ -158,6 +168,9 @@ PathExpansion expand_paths(const std::vector<std::string>& paths, const Selectio
     const config::FileSelection& named_selection = selection_for(path);
     if (named_selection.force_exclude && path != "." && named_selection.excluding(path)) continue;
     if (!fs::is_directory(status)) {
+      // With --force-exclude (pre-commit, editors) a named file is also held to what a walk
+      // checks: a hook matching *.xml passes launch files and other XML that is no model.
+      if (named_selection.force_exclude && walk_verdict(path) == WalkVerdict::NotAnAsset) continue;
       out.files.push_back(path);
       continue;
     }
