@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <regex>
+
 #include "report/gitlab_reporter.h"
 #include "test_support.h"
 
@@ -158,4 +160,62 @@ TEST_CASE("adoption: mimic-max-velocity and units-velocity-implausible agree on 
   r = run_cli({"--fix", "--unsafe-fixes", "cycle.urdf"}, dir.path());
   CHECK(r.exit_code == 0);
   CHECK(read_file(dir.path() / "cycle.urdf") == fixed);
+}
+
+TEST_CASE("adoption: --help lists every command, one line each", "[adoption][cli-commands]") {
+  const auto help = run_cli({"--help"});
+  CHECK(help.exit_code == 0);
+  for (const char* command : {"check", "compare", "expand", "tune", "simulate", "verify", "rule", "cat", "completion"}) {
+    INFO(command);
+    const std::regex line(std::string("\\n  asset-lint (\\[)?") + command + "\\b[^\\n]*  [a-z][^\\n]+\\n");
+    CHECK(std::regex_search(help.out, line));
+  }
+}
+
+TEST_CASE("adoption: a mistyped command or rule id is answered with the nearest one", "[adoption][cli-commands]") {
+  const auto verb = run_cli({"verfy", "gripper.urdf"}, report_dir());
+  CHECK(verb.exit_code == 2);
+  CHECK(verb.out.empty());
+  CHECK(verb.err == "asset-lint: error: unknown command 'verfy'; did you mean 'verify'?\n");
+  const auto far = run_cli({"robots"}, report_dir());
+  CHECK(far.exit_code == 2);
+  CHECK(far.err.find("'robots' is neither a command nor a file or directory") != std::string::npos);
+  // A file of that name is checked, command or not.
+  TempDir dir;
+  write_file(dir.path() / "verfy", "");
+  CHECK(run_cli({"verfy"}, dir.path()).err.find("unknown command") == std::string::npos);
+  const auto rule = run_cli({"rule", "limts-inverted"});
+  CHECK(rule.exit_code == 2);
+  CHECK(rule.err == "asset-lint: error: unknown rule 'limts-inverted'; did you mean 'limits-inverted'?\n");
+}
+
+TEST_CASE("adoption: completion scripts for bash, zsh and fish", "[adoption][cli-commands]") {
+  for (const char* shell : {"bash", "zsh", "fish"}) {
+    INFO(shell);
+    const auto script = run_cli({"completion", shell});
+    CHECK(script.exit_code == 0);
+    for (const char* word : {"verify", "simulate", "select", "output-format", "limits-inverted", "sarif"})
+      CHECK(script.out.find(word) != std::string::npos);
+  }
+  CHECK(run_cli({"completion", "tcsh"}).exit_code == 2);
+  if (!assetlint::test::on_path("bash")) return;
+  TempDir dir;
+  write_file(dir.path() / "asset-lint.bash", run_cli({"completion", "bash"}).out);
+  std::string out;
+  CHECK(assetlint::test::run_shell("bash -n " + assetlint::test::shell_quote((dir.path() / "asset-lint.bash").string()),
+                                   dir.path() / "log", out) == 0);
+  // Completing as bash does: the command word, a rule id after `rule`, an option and its value.
+  const auto complete = [&](const std::string& words, int index) {
+    const std::string script = "source asset-lint.bash; COMP_WORDS=(" + words + "); COMP_CWORD=" +
+                               std::to_string(index) + "; _asset_lint; printf '%s\\n' \"${COMPREPLY[@]}\"";
+    std::string reply;
+    CHECK(assetlint::test::run_shell("cd " + assetlint::test::shell_quote(dir.path().string()) + " && bash -c " +
+                                         assetlint::test::shell_quote(script),
+                                     dir.path() / "log", reply) == 0);
+    return reply;
+  };
+  CHECK(complete("asset-lint ver", 1) == "verify\n");
+  CHECK(complete("asset-lint rule limits-inv", 2) == "limits-inverted\n");
+  CHECK(complete("asset-lint --output-fo", 1) == "--output-format\n");
+  CHECK(complete("asset-lint --output-format sa", 2) == "sarif\n");
 }

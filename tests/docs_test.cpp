@@ -5,6 +5,7 @@
 #include <regex>
 #include <vector>
 
+#include "cli/command_table.h"
 #include "rules/registry.h"
 #include "test_support.h"
 
@@ -40,5 +41,17 @@ TEST_CASE("README and rule pages carry no development history", "[docs]") {
     std::smatch match;
     INFO(page.filename().string());
     if (std::regex_search(text, match, history)) FAIL_CHECK("'" << match.str() << "' at offset " << match.position());
+  }
+}
+
+// README's usage block is where a new user looks first: every command is on it, one line each.
+TEST_CASE("README's usage block lists every command", "[docs][cli-commands]") {
+  const std::string readme = assetlint::test::read_file(assetlint::test::source_dir() / "README.md");
+  const auto start = readme.find("## Usage\n\n```\n");
+  REQUIRE(start != std::string::npos);
+  const std::string block = readme.substr(start, readme.find("\n```", start + 14) - start);
+  for (const assetlint::cli::CommandInfo& command : assetlint::cli::command_table()) {
+    INFO(command.name);
+    CHECK(block.find("\n" + std::string(command.synopsis) + " ") != std::string::npos);
   }
 }

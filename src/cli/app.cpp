@@ -8,6 +8,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "cli/command_table.h"
+#include "cli/completion.h"
 #include "cli/options.h"
 #include "cli/report_writer.h"
 #include "cli/rule_pages.h"
@@ -27,6 +29,7 @@
 #include "engine/file_system.h"
 #include "pipeline/discovery.h"
 #include "report/settings_report.h"
+#include "util/spelling.h"
 
 namespace assetlint::cli {
 namespace {
@@ -163,21 +166,38 @@ int run_check_command(const std::vector<std::string>& args, std::istream& in, st
   return options.exit_zero && code == kExitFindings ? kExitClean : code;
 }
 
+// A first word that is no command and names nothing on disk is a mistyped command, not a
+// path to report as unreadable (`asset-lint verfy robot.urdf`). Words that look like paths
+// (a dot, a slash, a glob) are left to the check, which names them.
+std::optional<int> unknown_command(const std::string& word, std::ostream& err) {
+  if (word.empty() || word.starts_with("-") || word.find_first_of("./\\*?") != std::string::npos) return std::nullopt;
+  std::error_code ec;
+  if (std::filesystem::exists(word, ec)) return std::nullopt;
+  if (auto nearest = nearest_spelling(word, command_names()))
+    err << fmt::format("asset-lint: error: unknown command '{}'; did you mean '{}'?\n", word, *nearest);
+  else
+    err << fmt::format("asset-lint: error: '{}' is neither a command nor a file or directory; `asset-lint --help` "
+                       "lists the commands\n",
+                       word);
+  return kExitError;
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err,
         bool out_is_terminal) {
-  if (!args.empty() && args.front() == "rule") return run_rule_command(args, out, err);
-  if (!args.empty() && args.front() == "compare")
-    return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal, true);
-  if (!args.empty() && args.front() == "cat") return commands::run_cat({args.begin() + 1, args.end()}, out, err);
-  if (!args.empty() && args.front() == "tune") return commands::run_tune({args.begin() + 1, args.end()}, out, err);
-  if (!args.empty() && args.front() == "verify") return commands::run_verify({args.begin() + 1, args.end()}, out, err);
-  if (!args.empty() && args.front() == "expand") return commands::run_expand({args.begin() + 1, args.end()}, out, err);
-  if (!args.empty() && args.front() == "simulate")
-    return commands::run_simulate({args.begin() + 1, args.end()}, out, err);
-  if (!args.empty() && args.front() == "check")
-    return run_check_command({args.begin() + 1, args.end()}, in, out, err, out_is_terminal);
+  const std::string command = args.empty() ? "" : args.front();
+  const std::vector<std::string> rest = args.empty() ? args : std::vector<std::string>(args.begin() + 1, args.end());
+  if (command == "rule") return run_rule_command(args, out, err);
+  if (command == "completion") return run_completion_command(args, out, err);
+  if (command == "compare") return run_check_command(rest, in, out, err, out_is_terminal, true);
+  if (command == "cat") return commands::run_cat(rest, out, err);
+  if (command == "tune") return commands::run_tune(rest, out, err);
+  if (command == "verify") return commands::run_verify(rest, out, err);
+  if (command == "expand") return commands::run_expand(rest, out, err);
+  if (command == "simulate") return commands::run_simulate(rest, out, err);
+  if (command == "check") return run_check_command(rest, in, out, err, out_is_terminal);
+  if (auto code = unknown_command(command, err)) return *code;
   return run_check_command(args, in, out, err, out_is_terminal);
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "cli/command_table.h"
 #include "commands/command_input.h"
 #include "rules/registry.h"
 
@@ -98,11 +99,10 @@ void add_options(CLI::App& app, Options& o) {
                                      : std::string();
       });
   app.add_flag("--version", o.version, "Print the version and exit");
-  app.footer(
-      "Commands:\n  asset-lint [check] PATH...   check files\n  asset-lint compare A B [C]   compare the physics of files in any format\n  asset-lint expand FILE.xacro print the URDF a .xacro file expands to\n  asset-lint rule RULE-ID      print a rule's documentation (rule --all: every rule)\n  asset-lint cat FILE.usd      print a binary (crate) USD layer as USDA\n\n"
-      "Exit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
-      "remain, 2 usage, configuration or I/O error.\n"
-      "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
+  app.footer("Commands:\n" + commands_help() +
+             "\nExit status: 0 nothing at or above --fail-on (default warning: infos never fail), 1 such findings\n"
+             "remain, 2 usage, configuration or I/O error.\n"
+             "With --diff: 0 nothing to change, 1 a diff was printed, 2 error.");
 }
 
 // Each --select/--ignore pattern must name at least one rule: a typo would
@@ -123,7 +123,7 @@ bool validate_patterns(const std::vector<std::string>& patterns, const char* fla
 }  // namespace
 
 ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"asset-lint: checks robot assets (URDF, USDA, MJCF) against PhysX joint-tuning guidance", "asset-lint"};
+  CLI::App app{"asset-lint: checks robot assets (URDF, xacro, USD, MJCF) against joint-tuning guidance", "asset-lint"};
   Options options;
   options.jobs = std::max(1u, std::thread::hardware_concurrency());
   add_options(app, options);
@@ -141,6 +141,21 @@ ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& 
   options.ignore_given = app.count("--ignore") > 0;
   options.exclude_given = app.count("--exclude") > 0;
   return {std::move(options), 0};
+}
+
+std::vector<OptionName> option_names() {
+  CLI::App app;
+  Options options;
+  add_options(app, options);
+  std::vector<OptionName> names;
+  for (const CLI::Option* option : app.get_options()) {
+    std::string name;
+    if (!option->get_lnames().empty()) name = "--" + option->get_lnames().front();
+    else if (!option->get_snames().empty()) name = "-" + option->get_snames().front();
+    else continue;  // the positional paths
+    names.push_back({name, option->get_description(), option->get_type_size_max() > 0});
+  }
+  return names;
 }
 
 bool validate_options(const Options& o, std::ostream& err) {

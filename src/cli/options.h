@@ -50,6 +50,14 @@ struct ParsedOptions {
 };
 ParsedOptions parse_options(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
+// The options of `asset-lint [check]`, for the shell completions.
+struct OptionName {
+  std::string name;         // "--select" (the long name, else the short one)
+  std::string description;  // the help's text
+  bool takes_value = false;
+};
+std::vector<OptionName> option_names();
+
 // Combinations of options that parse but make no sense together; names the first on `err`.
 bool validate_options(const Options& options, std::ostream& err);
 

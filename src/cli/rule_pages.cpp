@@ -8,6 +8,7 @@
 #include "report/rule_docs.h"
 #include "rules/registry.h"
 #include "util/numbers.h"
+#include "util/spelling.h"
 
 namespace assetlint::cli {
 
@@ -40,7 +41,12 @@ void list_rules(std::ostream& out, bool json) {
 int show_rule(const std::string& id, std::ostream& out, std::ostream& err) {
   const RuleInfo* rule = rules::find_rule(id);
   if (!rule) {
-    err << fmt::format("asset-lint: error: unknown rule '{}'; `asset-lint --list-rules` lists them\n", id);
+    std::vector<std::string> ids;
+    for (const RuleInfo* known : rules::catalog()) ids.emplace_back(known->id);
+    if (auto nearest = nearest_spelling(id, ids))
+      err << fmt::format("asset-lint: error: unknown rule '{}'; did you mean '{}'?\n", id, *nearest);
+    else
+      err << fmt::format("asset-lint: error: unknown rule '{}'; `asset-lint --list-rules` lists them\n", id);
     return commands::kExitError;
   }
   for (const auto& [doc_id, page] : rule_docs()) {
