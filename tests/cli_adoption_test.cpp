@@ -219,3 +219,28 @@ TEST_CASE("adoption: completion scripts for bash, zsh and fish", "[adoption][cli
   CHECK(complete("asset-lint --output-fo", 1) == "--output-format\n");
   CHECK(complete("asset-lint --output-format sa", 2) == "sarif\n");
 }
+
+TEST_CASE("adoption: an asset-lint.toml above the git work tree is not used", "[adoption][config-lookup]") {
+  // A folder of clones with a gripper's configuration, and a quadruped's repository inside it.
+  TempDir dir;
+  write_file(dir.path() / "asset-lint.toml", "[simulation]\ntimesteps_per_second = 250\n");
+  const auto repo = dir.path() / "quadruped";
+  std::filesystem::create_directories(repo / ".git");
+  std::filesystem::create_directories(repo / "urdf");
+  write_file(repo / "urdf" / "gripper.urdf", read_file(report_dir() / "gripper.urdf"));
+  const auto shown = run_cli({"--show-settings", "urdf/gripper.urdf"}, repo);
+  CHECK(shown.exit_code == 0);
+  CHECK(shown.out.find("# configuration: none (defaults)\n") != std::string::npos);
+  CHECK(shown.out.find("# looked for asset-lint.toml in " + (repo / "urdf").string() + " and up to " + repo.string() +
+                       ", the git work tree's root (the lookup stops there)\n") != std::string::npos);
+  CHECK(shown.out.find("250") == std::string::npos);
+  // Inside the repository its own configuration is found as before.
+  write_file(repo / "asset-lint.toml", "[simulation]\ntimesteps_per_second = 120\n");
+  const auto own = run_cli({"--show-settings", "urdf/gripper.urdf"}, repo);
+  CHECK(own.out.find("timesteps_per_second = 120") != std::string::npos);
+  // Outside any work tree the walk goes on to the file system's root.
+  std::filesystem::remove_all(repo / ".git");
+  std::filesystem::remove(repo / "asset-lint.toml");
+  CHECK(run_cli({"--show-settings", "urdf/gripper.urdf"}, repo).out.find("timesteps_per_second = 250") !=
+        std::string::npos);
+}

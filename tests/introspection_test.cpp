@@ -29,6 +29,7 @@ TEST_CASE("introspection: --show-settings names where every value came from", "[
   CHECK(r.out ==
         "# Settings for gripper.urdf\n"
         "# configuration: asset-lint.toml\n"
+        "# looked for asset-lint.toml in " + dir.path().string() + "\n"
         "# checked tree (USD composition reads inside it): " + dir.path().string() + "\n"
         "\n"
         "select = []                              # default: every rule\n"

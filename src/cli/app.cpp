@@ -54,7 +54,19 @@ bool use_color(const Options& options, bool out_is_terminal) {
   return out_is_terminal && options.output_file.empty();
 }
 
-int show_settings(const std::string& file, config::SettingsResolver& resolver, std::ostream& out, std::ostream& err) {
+// Where the configuration of `path` was looked for, in words.
+std::string config_lookup(const std::string& path, bool explicit_config) {
+  if (explicit_config) return "looked for: none, --config names it";
+  const config::ConfigSearch search = config::search_config(path);
+  const std::string first = search.first.string(), last = search.last.string();
+  const std::string where = first == last ? fmt::format("looked for {} in {}", config::kFileName, first)
+                                          : fmt::format("looked for {} in {} and up to {}", config::kFileName, first, last);
+  if (!search.found.empty()) return where;
+  return where + (search.git_root ? ", the git work tree's root (the lookup stops there)" : ", the file system's root");
+}
+
+int show_settings(const std::string& file, config::SettingsResolver& resolver, bool explicit_config, std::ostream& out,
+                  std::ostream& err) {
   const std::string path = spelled(file, std::filesystem::current_path());
   if (auto error = resolver.prepare({path})) {
     err << "asset-lint: error: " << error->to_string() << "\n";
@@ -64,7 +76,7 @@ int show_settings(const std::string& file, config::SettingsResolver& resolver, s
   std::string tree = config::checked_root(path, settings);
   const std::optional<VariantRun> variants = plan_variants(path, settings);
   write_settings(out, path, settings, resolver.file_selection_for(path), tree.empty() ? "the file's directory" : tree,
-                 variants ? &*variants : nullptr);
+                 variants ? &*variants : nullptr, config_lookup(path, explicit_config));
   return kExitClean;
 }
 
@@ -103,7 +115,7 @@ int run_files(const Options& options, bool compare, std::istream& in, std::ostre
   const SelectionFor selection_for = [&resolver](const std::string& path) -> const config::FileSelection& {
     return resolver.file_selection_for(path);
   };
-  if (!options.show_settings.empty()) return show_settings(options.show_settings, resolver, out, err);
+  if (!options.show_settings.empty()) return show_settings(options.show_settings, resolver, !options.config_path.empty(), out, err);
   const PathExpansion expansion = expand_paths(options.paths, selection_for);
   if (options.show_files) {
     commands::announce_expansion(expansion, err);

@@ -354,20 +354,29 @@ std::optional<ConfigError> load_text(std::string_view text, const std::string& p
   return load_with([&] { return toml::parse(text, path); }, path, settings, display_path, nullptr);
 }
 
-std::filesystem::path discover(const std::filesystem::path& file) {
+ConfigSearch search_config(const std::filesystem::path& file) {
   std::error_code ec;
-  std::filesystem::path dir = std::filesystem::absolute(file, ec).parent_path();
-  while (!dir.empty()) {
+  ConfigSearch search;
+  search.first = std::filesystem::absolute(file, ec).parent_path();
+  for (std::filesystem::path dir = search.first; !dir.empty(); dir = dir.parent_path()) {
+    search.last = dir;
     const auto candidate = dir / kFileName;
     if (std::filesystem::is_regular_file(candidate, ec)) {
       // Shown in messages: relative to the working directory when it is below it.
       const auto relative = std::filesystem::relative(candidate, ec);
-      return !ec && !relative.empty() && *relative.begin() != ".." ? relative : candidate;
+      search.found = !ec && !relative.empty() && *relative.begin() != ".." ? relative : candidate;
+      return search;
+    }
+    // `.git` is a directory in a clone, a file in a linked work tree or a submodule.
+    if (std::filesystem::exists(dir / ".git", ec)) {
+      search.git_root = true;
+      return search;
     }
     if (dir == dir.root_path()) break;
-    dir = dir.parent_path();
   }
-  return {};
+  return search;
 }
+
+std::filesystem::path discover(const std::filesystem::path& file) { return search_config(file).found; }
 
 }  // namespace assetlint::config

@@ -1,5 +1,6 @@
 #pragma once
-// asset-lint.toml: found by walking up from each checked file, or named with --config.
+// asset-lint.toml: found by walking up from each checked file (to the git work tree's root), or
+// named with --config.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -40,8 +41,19 @@ RulePatterns patterns_from(const std::vector<std::string>& patterns, const std::
 std::optional<ConfigError> load_text(std::string_view text, const std::string& path, Settings& settings,
                                      const std::string& display_path = "");
 
-// The nearest asset-lint.toml in the file's directory or an ancestor; empty if none.
+// The nearest asset-lint.toml in the file's directory or an ancestor, up to the root of the git
+// work tree holding the file (a configuration above the repository belongs to something else);
+// empty if none.
 std::filesystem::path discover(const std::filesystem::path& file);
+
+// Where discover() looked: from the file's directory up to `last`, the work tree's root
+// (`git_root`) or the file system's.
+struct ConfigSearch {
+  std::filesystem::path found;  // as discover() returns it
+  std::filesystem::path first, last;
+  bool git_root = false;
+};
+ConfigSearch search_config(const std::filesystem::path& file);
 
 inline constexpr const char* kFileName = "asset-lint.toml";
 

@@ -76,9 +76,11 @@ void write_usd(std::ostream& out, const std::string& file, const Settings& setti
 }  // namespace
 
 void write_settings(std::ostream& out, const std::string& file, const Settings& settings,
-                    const config::FileSelection& files, const std::string& checked_tree, const VariantRun* variants) {
+                    const config::FileSelection& files, const std::string& checked_tree, const VariantRun* variants,
+                    const std::string& config_lookup) {
   out << fmt::format("# Settings for {}\n", file);
   out << fmt::format("# configuration: {}\n", settings.config_path.empty() ? "none (defaults)" : settings.config_path);
+  if (!config_lookup.empty()) out << fmt::format("# {}\n", config_lookup);
   out << fmt::format("# checked tree (USD composition reads inside it): {}\n\n", checked_tree);
   const std::string config_origin = settings.config_path.empty() ? "default" : settings.config_path;
   line(out, "select = " + quoted_list(settings.selection.select),

@@ -11,8 +11,9 @@
 namespace assetlint {
 
 // `variants`: the file's USD variant sets and the selections a check looks at (null: not USD).
+// `config_lookup`: where the configuration was looked for (one line, empty: not shown).
 void write_settings(std::ostream& out, const std::string& file, const Settings& settings,
                     const config::FileSelection& files, const std::string& checked_tree,
-                    const VariantRun* variants = nullptr);
+                    const VariantRun* variants = nullptr, const std::string& config_lookup = "");
 
 }  // namespace assetlint
