@@ -244,3 +244,39 @@ TEST_CASE("adoption: an asset-lint.toml above the git work tree is not used", "[
   CHECK(run_cli({"--show-settings", "urdf/gripper.urdf"}, repo).out.find("timesteps_per_second = 250") !=
         std::string::npos);
 }
+
+TEST_CASE("adoption: --diff says how many unsafe fixes wait for --unsafe-fixes", "[adoption][fix-safety]") {
+  // gripper.urdf's two fixes (swap inverted limits, raise a mimic's velocity limit) are unsafe.
+  const auto only_unsafe = run_cli({"--diff", "gripper.urdf"}, report_dir());
+  CHECK(only_unsafe.exit_code == 0);
+  CHECK(only_unsafe.out.empty());
+  CHECK(only_unsafe.err ==
+        "asset-lint: no safe fix applies; 2 unsafe fixes exist, applied with --unsafe-fixes (review with --diff "
+        "--unsafe-fixes)\n");
+  const auto both = run_cli({"--diff", "--unsafe-fixes", "gripper.urdf"}, report_dir());
+  CHECK(both.exit_code == 1);
+  CHECK(both.err.find("unsafe fix") == std::string::npos);
+  // The summary of --fix says the same.
+  TempDir dir;
+  write_file(dir.path() / "gripper.urdf", read_file(report_dir() / "gripper.urdf"));
+  const auto fixed = run_cli({"--fix", "gripper.urdf"}, dir.path());
+  CHECK(fixed.out.find("0 fixable with --fix (2 more with --unsafe-fixes)") != std::string::npos);
+}
+
+TEST_CASE("adoption: a fixed value's trailing comment restating the old value is rewritten", "[adoption][fix-safety]") {
+  TempDir dir;
+  const auto guide = assetlint::test::fixtures_dir() / "fix" / "drive-natural-frequency";
+  write_file(dir.path() / "guide.usda", read_file(guide / "guide_99_48_per_deg.usda"));
+  write_file(dir.path() / "asset-lint.toml", read_file(guide / "asset-lint.toml"));
+  CHECK(run_cli({"--fix", "--unsafe-fixes", "guide.usda"}, dir.path()).exit_code == 0);
+  const std::string fixed = read_file(dir.path() / "guide.usda");
+  CHECK(fixed.find("stiffness = 4.8   # 275 N*m/rad, per degree as USD writes it\n") != std::string::npos);
+  // A URDF comment in degrees after a limit in radians follows the limit.
+  write_file(dir.path() / "arm.urdf",
+             "<robot name=\"arm\">\n  <link name=\"a\"/>\n  <link name=\"b\"/>\n  <joint name=\"j\" type=\"revolute\">\n"
+             "    <parent link=\"a\"/>\n    <child link=\"b\"/>\n"
+             "    <limit lower=\"0.82\" upper=\"0\" effort=\"1\" velocity=\"1\"/> <!-- 47 deg -->\n  </joint>\n</robot>\n");
+  CHECK(run_cli({"--fix", "--unsafe-fixes", "--select", "limits-inverted", "arm.urdf"}, dir.path()).exit_code == 0);
+  CHECK(read_file(dir.path() / "arm.urdf").find("lower=\"0\" upper=\"0.82\" effort=\"1\" velocity=\"1\"/> <!-- 47 deg -->") !=
+        std::string::npos);
+}

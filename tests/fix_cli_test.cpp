@@ -124,7 +124,8 @@ TEST_CASE("cli: --diff exits 0 with no diff when there is nothing to change, and
   auto r = run_cli({"--diff", "robot.urdf"}, dir.path());  // the only fix is unsafe
   CHECK(r.exit_code == 0);
   CHECK(r.out.empty());
-  CHECK(r.err == "asset-lint: no fix applies; nothing to change\n");
+  CHECK(r.err == "asset-lint: no safe fix applies; 1 unsafe fix exists, applied with --unsafe-fixes (review with "
+                 "--diff --unsafe-fixes)\n");
   auto clean = run_cli({"--diff", "fixtures/robotiq_2f85/robotiq_2f85.urdf"});
   CHECK(clean.exit_code == 0);
   CHECK(clean.out.empty());

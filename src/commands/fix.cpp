@@ -110,6 +110,7 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
   for (auto& t : threads) t.join();
 
   bool any_diff = false;
+  std::size_t unsafe_left = 0;  // with --diff: unsafe fixes --unsafe-fixes would apply too
   std::vector<FileReport> remaining;
   const auto owners = file_owners(results);
   std::vector<std::string> pending_relint;
@@ -131,6 +132,8 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
       return other;
     });
     if (options.diff) {
+      for (const Diagnostic& d : result.remaining.diagnostics)
+        unsafe_left += d.fix && d.fix->applicability == Applicability::Unsafe ? 1 : 0;
       for (const fix::FixedFile& file : result.files) {
         out << fix::unified_diff(file.original, file.fixed, diff_label("a/", file.path), diff_label("b/", file.path));
         err << fmt::format("asset-lint: would fix {} in {}\n", problems(file.fixes), file.path);
@@ -162,7 +165,13 @@ int run_fix_command(const std::vector<std::string>& paths, const SettingsFor& se
   for (const std::string& path : pending_relint) remaining.push_back(lint_file(path, settings(path)));
   const bool failed = !run_problems.errors.empty();
   if (options.diff) {
-    if (!failed && !any_diff) err << "asset-lint: no fix applies; nothing to change\n";
+    const std::string unsafe =
+        fmt::format("{} unsafe fix{} {}", unsafe_left, unsafe_left == 1 ? "" : "es", unsafe_left == 1 ? "exists" : "exist");
+    if (!failed && !any_diff && unsafe_left == 0) err << "asset-lint: no fix applies; nothing to change\n";
+    else if (!failed && !any_diff)
+      err << "asset-lint: no safe fix applies; " << unsafe << ", applied with --unsafe-fixes (review with --diff --unsafe-fixes)\n";
+    else if (!failed && unsafe_left > 0)
+      err << "asset-lint: " << unsafe << " too, applied with --unsafe-fixes\n";
     return failed ? kExitError : any_diff ? kExitFindings : kExitClean;
   }
   std::erase_if(remaining, [](const FileReport& r) { return r.error.has_value(); });

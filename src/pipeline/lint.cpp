@@ -13,6 +13,7 @@
 #include "config/drive_overrides.h"
 #include "config/project_root.h"
 #include "engine/rule.h"
+#include "fix/trailing_comments.h"
 #include "formats/file_kind.h"
 #include "formats/mjcf/mjcf_reader.h"
 #include "formats/urdf/urdf_reader.h"
@@ -152,6 +153,8 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     diagnostics = check(result, settings, unparsable);
   }
   if (result.relocate) result.asset.sources = result.relocate(diagnostics);
+  for (auto& d : diagnostics)
+    if (d.fix) fix::restate_trailing_comments(result.asset.sources, *d.fix);
   for (auto& d : diagnostics) {
     // `[rules.<id>] severity` sets every finding of the rule, whatever tier the rule chose.
     d.severity = settings.severity_for(d.rule, d.severity);
