@@ -334,6 +334,8 @@ TEST_CASE("pre-commit hooks: xacro, .usdc and MJCF are checked, other XML is pas
   CHECK(out.find("assets/near_miss.usdc </gripper/finger_joint>: info:") != std::string::npos);
   CHECK(out.find("assets/hand.urdf:14:") != std::string::npos);
   CHECK(out.find("bringup.launch.xml") == std::string::npos);
+  // The macro file the hook names is checked through the file that includes it.
+  CHECK(out.find("urdf-invalid") == std::string::npos);
   CHECK(out.find("could not be read") == std::string::npos);
 }
 

@@ -159,3 +159,41 @@ TEST_CASE("xacro CLI: a property whose other uses need no fix is left alone, and
   test::run_cli({"--fix", "--unsafe-fixes", "urdf/demo_gripper.urdf.xacro"}, package);
   CHECK(test::read_file(macro) == source);
 }
+
+// A person edits the macro file, and the editor and the hooks name it: it is checked through the
+// top-level file of its package that includes it, at its own lines.
+TEST_CASE("xacro CLI: an include-only macro file is checked through its includer", "[xacro][cli][xacro-includers]") {
+  test::TempDir dir;
+  const fs::path package = copy_package(dir);
+  const auto direct = test::run_cli({"urdf/demo_gripper_macro.xacro"}, package);
+  CHECK(direct.exit_code == 1);
+  CHECK(direct.out.find("urdf-invalid") == std::string::npos);
+  CHECK(direct.out.rfind("urdf/demo_gripper_macro.xacro:19:31: error: limits [0, 47] of revolute joint 'left_finger_joint'", 0) ==
+        0);
+  CHECK(direct.out.find("urdf/demo_gripper.urdf.xacro:5:3: note: in macro 'demo_gripper' called at") != std::string::npos);
+  CHECK(direct.out.find("in 1 file.") != std::string::npos);
+
+  // The editor's path: the unsaved buffer is what the includer expands.
+  const std::string macro = test::read_file(package / "urdf" / "demo_gripper_macro.xacro");
+  const auto buffer = test::run_cli_with_input({"check", "-", "--stdin-filename", "urdf/demo_gripper_macro.xacro"}, package,
+                                               test::replace_once(macro, "upper=\"47\"", "upper=\"0.82\""));
+  CHECK(buffer.exit_code == 0);
+  CHECK(buffer.out.find("No problems found in 1 file.") != std::string::npos);
+  const auto stale = test::run_cli_with_input({"check", "-", "--stdin-filename", "urdf/demo_gripper_macro.xacro"}, package,
+                                              macro);
+  CHECK(stale.out.find("demo_gripper_macro.xacro:19:31: error:") != std::string::npos);
+
+  // Fixes go through it too, and the top-level file named beside it adds no repeats.
+  const auto diff = test::run_cli({"--diff", "--unsafe-fixes", "urdf/demo_gripper_macro.xacro"}, package);
+  CHECK(diff.out.find("+      <limit lower=\"0\" upper=\"0.820305\"") != std::string::npos);
+  const auto both = test::run_cli({"urdf/demo_gripper_macro.xacro", "urdf/demo_gripper.urdf.xacro"}, package);
+  CHECK(both.out.find("Found 2 problems") != std::string::npos);
+
+  // A library nothing includes says so instead of checking a robot that is not there.
+  test::write_file(package / "urdf" / "spare_macros.xacro",
+                   "<robot xmlns:xacro=\"http://ros.org/wiki/xacro\">\n  <xacro:macro name=\"m\"><link name=\"a\"/></xacro:macro>\n</robot>\n");
+  const auto orphan = test::run_cli({"urdf/spare_macros.xacro"}, package);
+  CHECK(orphan.exit_code == 2);
+  CHECK(orphan.err.find("only defines macros and properties, and no top-level .xacro file in '.' includes it") !=
+        std::string::npos);
+}

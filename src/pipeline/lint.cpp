@@ -26,6 +26,7 @@
 #include "pipeline/inherited_fixes.h"
 #include "pipeline/suppressions.h"
 #include "pipeline/variant_checks.h"
+#include "pipeline/xacro_includers.h"
 #include "rules/reader_rules.h"
 #include "rules/registry.h"
 
@@ -132,6 +133,7 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     report.error = std::move(*why);
     return report;
   }
+  if (auto through = lint_through_includers(path, text, settings, files)) return std::move(*through);
   std::shared_ptr<const usda::Layer> crate_layer;
   auto file = root_of(path, std::move(text), report.error.emplace(), crate_layer);
   if (!file) return report;

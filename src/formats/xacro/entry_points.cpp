@@ -24,12 +24,8 @@ struct Scanned {
   bool library = true;                // only definitions at the top level
 };
 
-Scanned scan(const std::string& path) {
+Scanned scan_text(std::string_view text) {
   Scanned out;
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
   const xml::XmlScan s = xml::scan_xml(text);
   if (s.tags.empty() || !s.recoverable) {
     out.library = false;  // let the check report what is wrong with it
@@ -38,13 +34,20 @@ Scanned scan(const std::string& path) {
   for (const xml::XmlStartTag& tag : s.tags) {
     if (tag.name != "xacro:include") continue;
     if (const xml::XmlAttributeSpan* a = tag.attribute("filename"))
-      out.includes.push_back(xml::decode_attribute_value(std::string_view(text).substr(a->value_offset, a->value_length)));
+      out.includes.push_back(xml::decode_attribute_value(text.substr(a->value_offset, a->value_length)));
   }
   for (std::uint32_t i = s.tags[0].first_child; i != xml::XmlStartTag::kNone; i = s.tags[i].next_sibling) {
     const std::string_view name = s.tags[i].name;
     if (name != "xacro:macro" && name != "xacro:property" && name != "xacro:include" && name != "xacro:arg") out.library = false;
   }
   return out;
+}
+
+Scanned scan(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return scan_text(buffer.str());
 }
 
 // Where an include points, as far as it can be told without expanding: `$(find pkg)` and
@@ -75,6 +78,28 @@ Target resolve(const std::string& spec, const std::string& from) {
 }
 
 }  // namespace
+
+bool is_xacro_library(std::string_view text) {
+  const xml::XmlScan s = xml::scan_xml(text);
+  // A root that names the robot is a top file, whatever it includes.
+  return scan_text(text).library && !s.tags.empty() && s.tags[0].attribute("name") == nullptr;
+}
+
+bool includes_file(const std::string& top, const std::string& file) {
+  const std::string wanted = canonical_path(file);
+  std::set<std::string> seen{canonical_path(top)};
+  std::vector<std::string> pending{top};
+  while (!pending.empty()) {
+    const std::string from = pending.back();
+    pending.pop_back();
+    for (const std::string& spec : scan(from).includes) {
+      const Target t = resolve(spec, from);
+      if (t.path.empty() ? (t.suffix.size() > 1 && wanted.ends_with(t.suffix)) : t.path == wanted) return true;
+      if (!t.path.empty() && seen.insert(t.path).second) pending.push_back(t.path);
+    }
+  }
+  return false;
+}
 
 std::vector<std::string> top_level_xacro_files(const std::vector<std::string>& paths) {
   std::set<std::string> included;
