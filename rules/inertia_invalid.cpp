@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "formats/urdf/urdf_reread.h"
 #include "model/topology.h"
 #include "physics/articulation.h"
 #include "physics/inertia.h"
+#include "physics/mujoco_inertia.h"
 #include "rules/all_rules.h"
 #include "rules/support.h"
 #include "util/numbers.h"
@@ -67,8 +69,10 @@ class InertiaInvalid final : public Rule {
     if (urdf) check_bodies(asset, bodies, out);
     const auto where = placements(asset, bodies);
     const auto articulation = physics::shared_articulation(asset);
+    const std::optional<physics::MujocoInertiaInput> mujoco = mujoco_input(asset);
     for (std::size_t i = 0; i < asset.links.size(); ++i)
-      if (!from_geometry(asset.links[i])) check_link(asset.links[i], where[i], *articulation, settings, out);
+      if (!from_geometry(asset.links[i]))
+        check_link(asset.links[i], where[i], *articulation, mujoco, settings, out);
     const auto equal = report_mass_equals_inertia(asset, out);
     report_gyration(asset, where, equal, settings, out);
   }
@@ -93,6 +97,25 @@ class InertiaInvalid final : public Rule {
         // Off-diagonal entries move the principal moments too, twice as much at most.
         slack += (i == j ? 1.0 : 2.0) * half_unit_in_last_digit(inertia(i, j));
     return slack;
+  }
+
+  // How MuJoCo's compiler receives the file's tensors: a URDF's <inertia> is a full tensor (its
+  // importer reads the file's <mujoco><compiler> section); an MJCF's values are those the reader
+  // already bounded and balanced as the compiler does, whose eigenvalue check it cannot repeat
+  // (it does not keep whether a tensor was written full or diagonal). USD: MuJoCo does not read it.
+  static std::optional<physics::MujocoInertiaInput> mujoco_input(const Asset& asset) {
+    if (asset.format == SourceFormat::Urdf) return urdf::mujoco_inertia_input(asset);
+    if (asset.format == SourceFormat::Mjcf) return physics::MujocoInertiaInput{physics::MujocoInertiaInput::Form::Unknown};
+    return std::nullopt;
+  }
+
+  // The note on a finding whose tensor MuJoCo's compiler refuses: the file does not load there.
+  static void refusal_note(Diagnostic& d, const std::string& refusal, const Placement& placement, bool urdf) {
+    d.note(fmt::format("MuJoCo's compiler refuses the file at this link: \"{}\" (mjCBody::Compile){}.", refusal,
+                       urdf && placement.role == Role::Welded
+                           ? "; its URDF import fuses links welded by fixed joints (fusestatic) only after "
+                             "checking each link's own tensor"
+                           : ""));
   }
 
   // Mass properties MuJoCo computes from a body's geoms describe that geometry exactly: nothing
@@ -314,13 +337,61 @@ class InertiaInvalid final : public Rule {
     return base && !(base->inertial && base->inertial->mass_authored && base->inertial->mass.value > 0);
   }
 
+  // What a body's links carry that the simulators see: collision shapes (which PhysX and MuJoCo
+  // weigh when no mass is written) and visual ones (which neither weighs).
+  struct Shapes {
+    bool collision = false;
+    bool visual = false;
+    bool any() const { return collision || visual; }
+  };
+  static Shapes shapes_of(const Asset& asset, const RigidBody& body) {
+    Shapes shapes;
+    for (const Link* link : body.links) {
+      shapes.collision = shapes.collision || !link->collisions.empty();
+      shapes.visual = shapes.visual || urdf::link_has_visual(asset, *link);
+    }
+    return shapes;
+  }
+
+  // MuJoCo's compiler rejects a moving body without mass (mjCModel::TryCompile), unless a link
+  // welded to it brings some; its URDF import weighs collision geoms only.
+  static void massless_refusal_note(Diagnostic& d) {
+    d.note("MuJoCo refuses the file: its compiler rejects a moving body without mass (\"mass and inertia of moving "
+           "bodies must be larger than mjMINVAL\"), and its URDF import gives visual geoms no mass.");
+  }
+
+  // What each simulator makes of a moving body without <inertial>, by the shapes it carries.
+  static void consumers_note(Diagnostic& d, const Shapes& shapes, bool virtual_base) {
+    if (shapes.collision) {
+      d.note("PhysX (Isaac Sim's URDF importer) computes its mass and inertia from its collision shapes at the default "
+             "density of 1000 kg/m³, and MuJoCo's compiler from its collision geoms at the same density (its URDF "
+             "default inertiafromgeom=\"auto\" fills every link without <inertial>; visual geoms weigh nothing): a "
+             "solid of water the part's shape, not the part.");
+      return;
+    }
+    if (virtual_base)
+      d.note("It is a frame of a virtual base: a massless body without shapes between the fixed base and the first link "
+             "with mass, which kinematics and control libraries read as one floating body.");
+    else if (shapes.visual)
+      d.note("It is drawn but collides with nothing: PhysX has no collision shape to compute a mass from, so the "
+             "importer invents one.");
+    else
+      d.note("Without one, the importer or simulator invents a mass and inertia unrelated to the part.");
+    massless_refusal_note(d);
+    if (virtual_base)
+      d.note("For MuJoCo, give each such link a token <inertial> (1e-6 kg, 1e-9 kg·m²) or replace the chain by a "
+             "floating joint.");
+  }
+
   // A body that moves needs mass: without an inertial the importer invents one.
   static void check_bodies(const Asset& asset, const std::vector<RigidBody>& bodies, Reporter& out) {
     const BodyTree tree = body_tree(asset, bodies);
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       const RigidBody& body = bodies[b];
       if (body.links.empty()) continue;  // undefined child: structure-undefined-link reports it
-      if (virtual_base_body(asset, tree, bodies, b)) continue;
+      // A link with a shape is a part, whatever carries the mass above it: never a virtual base.
+      const Shapes shapes = shapes_of(asset, body);
+      const bool virtual_base = !shapes.any() && virtual_base_body(asset, tree, bodies, b);
       const Link& child = *body.links.front();
       const Link* first_inertial = nullptr;
       bool any_negative = false;
@@ -334,24 +405,29 @@ class InertiaInvalid final : public Rule {
       }
       if (any_negative) continue;  // reported once, as a negative mass
       if (!first_inertial) {
-        out.report(child.name.span, fmt::format("link '{}' moves but has no <inertial>", child.name.text))
-            .note(body.joint->name.span, fmt::format("It is the child of {}; no link welded to it has an <inertial> "
-                                                     "either.",
-                                                     joint_label(*body.joint)))
-            .note("Without one, the importer or simulator invents a mass and inertia unrelated to the part.");
+        Diagnostic& d = out.report(child.name.span, fmt::format("link '{}' moves but has no <inertial>", child.name.text));
+        d.note(body.joint->name.span, fmt::format("It is the child of {}; no link welded to it has an <inertial> "
+                                                  "either.",
+                                                  joint_label(*body.joint)));
+        consumers_note(d, shapes, virtual_base);
       } else if (total_mass <= 0) {
-        out.report(first_inertial->inertial->mass.span,
-                   fmt::format("link '{}' moves but its mass is {} kg", first_inertial->name.text,
-                               format_number(first_inertial->inertial->mass.value)))
-            .note(body.joint->name.span,
-                  fmt::format("It is part of the body moved by {}, and no link of that body has a positive mass.",
-                              joint_label(*body.joint)));
+        Diagnostic& d = out.report(first_inertial->inertial->mass.span,
+                                   fmt::format("link '{}' moves but its mass is {} kg", first_inertial->name.text,
+                                               format_number(first_inertial->inertial->mass.value)));
+        d.note(body.joint->name.span,
+               fmt::format("It is part of the body moved by {}, and no link of that body has a positive mass.",
+                           joint_label(*body.joint)));
+        // A welded link without <inertial> but with collision shapes is weighed by MuJoCo.
+        if (std::none_of(body.links.begin(), body.links.end(),
+                         [](const Link* link) { return !link->inertial && !link->collisions.empty(); }))
+          massless_refusal_note(d);
       }
     }
   }
 
   void check_link(const Link& link, const Placement& placement, const physics::Articulation& articulation,
-                  const Settings& settings, Reporter& out) const {
+                  const std::optional<physics::MujocoInertiaInput>& mujoco, const Settings& settings,
+                  Reporter& out) const {
     if (!link.inertial || !link.inertial->mass_authored) return;
     const Inertial& inertial = *link.inertial;
     const double mass = inertial.mass.value;
@@ -359,17 +435,27 @@ class InertiaInvalid final : public Rule {
       out.report(inertial.mass.span, fmt::format("link '{}' has negative mass {} kg", link.name.text, format_number(mass)));
       return;
     }
+    if (!inertial.inertia_authored) return;
+    // Whatever a simulator that merges welded links would make of it, a tensor MuJoCo's
+    // compiler refuses keeps the file from loading there: an error wherever the link sits.
+    const std::optional<std::string> refusal =
+        mujoco ? physics::mujoco_inertia_refusal(inertial.inertia, *mujoco) : std::nullopt;
+    const bool urdf = mujoco && mujoco->form == physics::MujocoInertiaInput::Form::Full;
+    const auto refused = [&](Diagnostic& d) {
+      if (refusal) refusal_note(d, *refusal, placement, urdf);
+    };
     const double dummy_mass = rule_option(info_, settings, "dummy_mass");
-    if (mass == 0 || !inertial.inertia_authored) return;
-    if (placement.role == Role::Root && mass <= dummy_mass) return;  // a dummy root is not a body
+    if ((mass == 0 || (placement.role == Role::Root && mass <= dummy_mass)) && !refusal) return;  // a frame
 
     const Eigen::Vector3d moments = physics::principal_moments(inertial.inertia);
     const double scale = std::max(std::abs(moments[0]), std::abs(moments[2]));
     if (point_mass(inertial)) {
       // A point mass: welded to another body it only adds m·d² to that body (PhysX and the
-      // URDF importers merge welded links), so only a body of its own is a problem.
+      // URDF importers merge welded links), so only a body of its own is a problem to them.
       if (placement.role == Role::BodyStart && !placement.welded_inertia)
-        report_point_mass(link, placement, articulation.translates_only(link), out);
+        report_point_mass(link, placement, articulation.translates_only(link), refusal, urdf, out);
+      else if (refusal)
+        report_refused(link, placement, moments, *refusal, urdf, out);
       return;
     }
     const double relative = rule_option(info_, settings, "definiteness_tolerance");
@@ -378,16 +464,18 @@ class InertiaInvalid final : public Rule {
     // A frame-light link welded to another body is merged into it: its tensor changes that
     // body's by a negligible amount, wrong or not.
     const bool negligible = placement.role == Role::Welded && mass <= dummy_mass;
-    const Severity impossible = negligible                                        ? Severity::Info
+    const Severity impossible = refusal                                              ? Severity::Error
+                                : negligible                                         ? Severity::Info
                                 : placement.role == Role::Welded && !placement.moves ? Severity::Warning
                                                                                      : Severity::Error;
     const auto merged_note = [&](Diagnostic& d) {
       if (negligible)
         d.note(fmt::format("It weighs {} kg (at most dummy_mass {} kg) and is welded by {}: merged into the body it is "
-                           "welded to, it changes that body's inertia by at most {} kg·m². Wrong, but harmless.",
+                           "welded to, it changes that body's inertia by at most {} kg·m². Wrong, but harmless{}.",
                            format_number(mass), format_number(dummy_mass), joint_label(*placement.joint),
-                           format_number(scale, 3)));
+                           format_number(scale, 3), refusal ? " to PhysX" : ""));
     };
+    const double excess = moments[2] - (moments[0] + moments[1]);
     if (moments[0] < -relative * scale) {
       Diagnostic& d = out.report(inertial.inertia_span, impossible,
                                  fmt::format("inertia of link '{}' has a negative principal moment {} kg·m²",
@@ -396,22 +484,64 @@ class InertiaInvalid final : public Rule {
                          moments_text(moments), format_number(mass)));
       d.note("The usual cause is a product of inertia with the wrong sign, or products copied from another frame.");
       merged_note(d);
+      refused(d);
     } else if (moments[0] <= relative * scale) {
-      report_singular(link, placement, moments, relative, out);
-    } else if (moments[2] > (moments[0] + moments[1]) * (1 + triangle) &&
-               moments[2] - (moments[0] + moments[1]) > written_rounding(inertial.inertia)) {
+      report_singular(link, placement, moments, relative, refusal, urdf, out);
+    } else if (moments[2] > (moments[0] + moments[1]) * (1 + triangle) && excess > written_rounding(inertial.inertia)) {
       Diagnostic& d = out.report(inertial.inertia_span, impossible,
                                  fmt::format("inertia of link '{}' violates the triangle inequality", link.name.text));
       d.note(fmt::format("Principal moments {}: {} > {} + {}.", moments_text(moments), format_number(moments[2], 4),
                          format_number(moments[0], 4), format_number(moments[1], 4)));
       d.note("No distribution of positive mass has a largest moment above the sum of the other two.");
       merged_note(d);
+      refused(d);
+    } else if (excess > 0 && excess <= written_rounding(inertial.inertia) && refusal) {
+      // Within the written rounding: a plate or rod whose I₃ = I₁ + I₂ was rounded up. No motion
+      // changes, but MuJoCo checks A + B ≥ C exactly.
+      Diagnostic& d = out.report(inertial.inertia_span, Severity::Error,
+                                 fmt::format("inertia of link '{}' breaks the triangle inequality by its rounding, and "
+                                             "MuJoCo refuses it",
+                                             link.name.text));
+      d.note(fmt::format("Principal moments {}: {} exceeds {} + {} by {} kg·m², within half a unit in the last written "
+                         "digit of each entry: a thin plate or rod (I₃ = I₁ + I₂) written rounded, the same body to "
+                         "PhysX and to any simulator that takes the moments as they are.",
+                         moments_text(moments), format_number(moments[2], 4), format_number(moments[0], 4),
+                         format_number(moments[1], 4), format_number(excess, 3)));
+      refused(d);
+      d.note(fmt::format("Write the largest moment as the sum of the other two ({} kg·m²), or, for MuJoCo, set "
+                         "balanceinertia=\"true\" in the <compiler>{}.",
+                         format_number(moments[0] + moments[1], 6), urdf ? " of a <mujoco> section under <robot>" : ""));
+    } else if (refusal && moments[0] < physics::kMujocoMinEigenvalue) {
+      report_refused(link, placement, moments, *refusal, urdf, out);  // moments too small to be a shape
     }
   }
 
-  static void report_point_mass(const Link& link, const Placement& placement, bool translates_only, Reporter& out) {
+  // A tensor too small for MuJoCo that no other finding names: a point mass written as rounding
+  // noise, or a frame's token tensor, which the simulators that merge welded links never mind
+  // (six zeros would be accepted: MuJoCo reads them as no tensor).
+  static void report_refused(const Link& link, const Placement& placement, const Eigen::Vector3d& moments,
+                             const std::string& refusal, bool urdf, Reporter& out) {
     const Inertial& inertial = *link.inertial;
-    if (translates_only) {
+    Diagnostic& d = out.report(inertial.inertia_span, Severity::Error,
+                               fmt::format("MuJoCo refuses the inertia of link '{}': smallest principal moment {} kg·m²",
+                                           link.name.text, format_number(moments[0], 4)));
+    d.note(fmt::format("Principal moments {} on {} kg{}.", moments_text(moments), format_number(inertial.mass.value),
+                       point_mass(inertial) ? ": a zero tensor written with rounding noise" : ""));
+    if (placement.joint && placement.role == Role::Welded)
+      d.note(placement.joint->name.span,
+             fmt::format("Welded by {}, it is merged as a point mass into the body it is welded to by PhysX and "
+                         "Isaac Sim's importer: harmless there.",
+                         joint_label(*placement.joint)));
+    refusal_note(d, refusal, placement, urdf);
+    d.note(urdf ? "Write all six entries as 0 (MuJoCo then reads no tensor and takes the link as a point mass), or "
+                  "the part's tensor from CAD."
+                : "Write the part's tensor from CAD.");
+  }
+
+  static void report_point_mass(const Link& link, const Placement& placement, bool translates_only,
+                                const std::optional<std::string>& refusal, bool urdf, Reporter& out) {
+    const Inertial& inertial = *link.inertial;
+    if (translates_only && !refusal) {
       out.report(inertial.inertia_span, Severity::Info,
                  fmt::format("link '{}' has mass {} kg and a zero inertia tensor, but it only slides",
                              link.name.text, format_number(inertial.mass.value)))
@@ -424,24 +554,27 @@ class InertiaInvalid final : public Rule {
           .note("If the base is meant to float, give the link a tensor: a floating chain turns as a whole.");
       return;
     }
-    out.report(inertial.inertia_span, Severity::Warning,
-               fmt::format("link '{}' moves with mass {} kg but a zero inertia tensor", link.name.text,
-                           format_number(inertial.mass.value)))
-        .note(placement.joint->name.span,
-              fmt::format("It is the child of {}, a body of its own, and nothing welded to it carries inertia.",
-                          joint_label(*placement.joint)))
-        .note("PhysX reads a zero moment as infinite inertia about that axis (the rotation is locked); other "
-              "simulators reject the body or substitute a default.");
+    Diagnostic& d = out.report(inertial.inertia_span, refusal ? Severity::Error : Severity::Warning,
+                               fmt::format("link '{}' moves with mass {} kg but a zero inertia tensor", link.name.text,
+                                           format_number(inertial.mass.value)));
+    d.note(placement.joint->name.span,
+           fmt::format("It is the child of {}, a body of its own, and nothing welded to it carries inertia.",
+                       joint_label(*placement.joint)));
+    d.note("PhysX reads a zero moment as infinite inertia about that axis (the rotation is locked); other "
+           "simulators reject the body or substitute a default.");
+    if (refusal) refusal_note(d, *refusal, placement, urdf);
   }
 
   static void report_singular(const Link& link, const Placement& placement, const Eigen::Vector3d& moments,
-                              double relative, Reporter& out) {
+                              double relative, const std::optional<std::string>& refusal, bool urdf, Reporter& out) {
     const Inertial& inertial = *link.inertial;
     const bool pasted = physics::pasted_tensor(inertial.inertia);
     // Welded to another body a rank-deficient tensor is merged harmlessly; say so only when
-    // it is the tell-tale pasted value.
-    if (placement.role != Role::BodyStart && !pasted) return;
-    const Severity severity = placement.role == Role::BodyStart ? Severity::Warning : Severity::Info;
+    // it is the tell-tale pasted value, or when MuJoCo refuses it.
+    if (placement.role != Role::BodyStart && !pasted && !refusal) return;
+    const Severity severity = refusal                                ? Severity::Error
+                              : placement.role == Role::BodyStart ? Severity::Warning
+                                                                  : Severity::Info;
     Diagnostic& d = out.report(
         inertial.inertia_span, severity,
         pasted ? fmt::format("inertia of link '{}' has all six entries equal to {}: a pasted placeholder",
@@ -454,7 +587,10 @@ class InertiaInvalid final : public Rule {
     if (pasted) d.note("A tensor with ixx = iyy = izz = ixy = ixz = iyz has rank one: one value typed into every field.");
     if (placement.role != Role::BodyStart)
       d.note(placement.joint ? placement.joint->name.span : link.name.span,
-             "The link is welded by fixed joints, so the simulator merges it into another body; harmless there.");
+             fmt::format("The link is welded by fixed joints, so the simulator merges it into another body; harmless "
+                         "there{}.",
+                         refusal ? " (PhysX, Isaac Sim's importer)" : ""));
+    if (refusal) refusal_note(d, *refusal, placement, urdf);
   }
 
   RuleInfo info_{"inertia-invalid",

@@ -367,8 +367,12 @@ TEST_CASE("inertia-invalid: triangle inequality numbers and the triangle_toleran
   CHECK(d.span.line == 13);
   CHECK(d.span.column == 7);
   CHECK(d.message == "inertia of link 'knuckle' violates the triangle inequality");
-  REQUIRE(d.notes.size() == 2);
+  REQUIRE(d.notes.size() == 3);
   CHECK(d.notes[0].message == "Principal moments [4e-6, 4.1e-6, 2.2e-5] kg·m²: 2.2e-5 > 4e-6 + 4.1e-6.");
+  // MuJoCo's compiler refuses the file on it: the finding says so.
+  CHECK(d.notes[2].message ==
+        "MuJoCo's compiler refuses the file at this link: \"inertia must satisfy A + B >= C; use 'balanceinertia' to "
+        "fix\" (mjCBody::Compile).");
   CHECK_FALSE(d.fix);
 
   Settings loose;
@@ -392,10 +396,13 @@ TEST_CASE("inertia-invalid: a massless or missing inertial on a moving link", "[
   REQUIRE(zero.diagnostics.size() == 1);
   CHECK(zero.diagnostics[0].span.line == 19);
   CHECK(zero.diagnostics[0].message == "link 'finger' moves but its mass is 0 kg");
-  REQUIRE(zero.diagnostics[0].notes.size() == 1);
+  REQUIRE(zero.diagnostics[0].notes.size() == 2);
   CHECK(zero.diagnostics[0].notes[0].message ==
         "It is part of the body moved by revolute joint 'finger_tip_joint', and no link of that body has a positive "
         "mass.");
+  CHECK(zero.diagnostics[0].notes[1].message.rfind("MuJoCo refuses the file: its compiler rejects a moving body "
+                                                   "without mass",
+                                                   0) == 0);
 
   // A root link without mass does not move: nothing to report.
   CHECK(lint(gripper(R"(<mass value="0.636"/>)", R"(<mass value="0"/>)")).diagnostics.empty());
