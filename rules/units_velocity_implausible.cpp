@@ -142,6 +142,7 @@ class UnitsVelocityImplausible final : public Rule {
       }
       const bool any_reading = std::any_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.reading.has_value(); });
       if (!any_reading) continue;  // fast but explained by no unit: not a unit mistake
+      if (report_transmission(asset, verdicts, settings, out)) continue;
       const bool one_reading = std::all_of(verdicts.begin(), verdicts.end(), [&](const Verdict& v) {
         return v.reading && v.reading == first.reading && v.fast == first.fast;
       });
@@ -297,6 +298,76 @@ class UnitsVelocityImplausible final : public Rule {
     d.note("Write the joint's real maximum speed from the data sheet; no value is proposed.");
   }
 
+  // Another joint whose limits give the same mechanical power, effort × velocity, within
+  // power_match_tolerance, at a velocity of its own that is plausible: the same motor behind
+  // another transmission (a linkage, a belt, a different gear), not a unit slip.
+  struct PowerMatch {
+    const Joint* joint = nullptr;
+    double power = 0;        // W, this joint's effort × velocity
+    double other_power = 0;  // W, the matching joint's
+  };
+  std::optional<PowerMatch> same_power(const Asset& asset, const Joint& joint, const Settings& settings) const {
+    if (!joint.effort || !(joint.effort->value > 0)) return std::nullopt;
+    const double tolerance = rule_option(info_, settings, "power_match_tolerance");
+    const double power = joint.effort->value * joint.velocity->value;
+    std::optional<PowerMatch> best;
+    for (const Joint& other : asset.joints) {
+      if (&other == &joint || !is_single_dof(other.type) || !other.effort || !other.velocity) continue;
+      const double effort = other.effort->value, velocity = other.velocity->value;
+      if (!(effort > 0) || !(velocity > 0)) continue;
+      // The same limits again is the same joint copied, not a transmission.
+      if (std::abs(velocity - joint.velocity->value) <= 0.05 * std::max(velocity, joint.velocity->value)) continue;
+      const double other_power = effort * velocity;
+      const double mismatch = std::abs(other_power - power) / std::max(other_power, power);
+      if (mismatch > tolerance || judge(asset, other, settings)) continue;
+      if (!best || mismatch < std::abs(best->other_power - power) / std::max(best->other_power, power))
+        best = PowerMatch{&other, power, other_power};
+    }
+    return best;
+  }
+
+  // When every joint carrying the value matches another joint's power, the value is a gear ratio
+  // away from that joint's, not a unit away from plausible: an info that names the match, no fix.
+  bool report_transmission(const Asset& asset, const std::vector<Verdict>& verdicts, const Settings& settings,
+                           Reporter& out) const {
+    std::vector<PowerMatch> matches;
+    for (const Verdict& v : verdicts) {
+      auto match = same_power(asset, *v.joint, settings);
+      if (!match) return false;
+      matches.push_back(*match);
+    }
+    const Verdict& first = verdicts.front();
+    const PowerMatch& match = matches.front();
+    const Joint& joint = *first.joint;
+    const Quantity& velocity = *joint.velocity;
+    const Joint& other = *match.joint;
+    const double ratio = velocity.value / other.velocity->value;
+    Diagnostic& d = out.report(velocity.span, Severity::Info,
+                               fmt::format("velocity limit {} of {} has the power of '{}': a gear ratio, not a "
+                                           "unit",
+                                           describe(velocity), joint_label(joint), other.name.text));
+    d.note(fmt::format("It would cross {} in {} ({} {}), and read as {} it would take {}; but effort × velocity is "
+                       "{} × {} = {} W, and {}'s is {} × {} = {} W: the same motor behind a gear ratio of {}, which "
+                       "trades torque for speed.",
+                       first.range_text, seconds(first.time), first.fast ? "less than" : "more than",
+                       seconds(rule_option(info_, settings, first.fast ? "min_traversal_time_s" : "max_traversal_time_s")),
+                       first.reading ? unit_symbol(*first.reading) : "another unit", seconds(first.meant_time),
+                       describe(*joint.effort), describe(velocity), format_number(match.power, 4), other.name.text,
+                       describe(*other.effort), describe(*other.velocity), format_number(match.other_power, 4),
+                       format_number(ratio, 4)));
+    d.note(other.velocity->span, fmt::format("'{}': the same power at {}.", other.name.text, describe(*other.velocity)));
+    const std::string also = others_note(verdicts);
+    if (!also.empty()) d.note(also);
+    d.note(first.reading && first.meant > 0
+               ? fmt::format("Converting the unit would make it {} ({}× {}) and cripple the joint; no fix is offered. "
+                             "Check the speed against the actuator's data sheet.",
+                             describe(first.meant, velocity.unit), format_number(std::max(first.meant, velocity.value) / std::min(first.meant, velocity.value), 3),
+                             first.fast ? "slower" : "faster")
+               : std::string("No unit makes it plausible and no fix is offered. Check the speed against the actuator's "
+                             "data sheet."));
+    return true;
+  }
+
   static std::string others_note(const std::vector<Verdict>& verdicts) {
     if (verdicts.size() < 2) return {};
     std::string names;
@@ -318,7 +389,10 @@ class UnitsVelocityImplausible final : public Rule {
                    "angular limits above this (rad/s) and too fast to be real are reported"},
                   {"max_linear_velocity", 5.0, "linear limits above this (m/s) and too fast to be real are reported"},
                   {"placeholder_velocity", 1000.0,
-                   "limits at or above this (rad/s or m/s) are placeholders such as 1000 or 1e9"}}};
+                   "limits at or above this (rad/s or m/s) are placeholders such as 1000 or 1e9"},
+                  {"power_match_tolerance", 0.03,
+                   "a limit whose effort × velocity is within this fraction of another joint's (at a plausible velocity "
+                   "of its own) is a transmission, not a unit slip"}}};
 };
 
 }  // namespace
