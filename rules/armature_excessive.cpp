@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "physics/drive.h"
+#include "physics/servo_step.h"
 #include "rules/drive_support.h"
 #include "rules/all_rules.h"
 #include "rules/support.h"
@@ -50,12 +51,15 @@ class ArmatureExcessive final : public Rule {
       Candidate c{joint, lighter, moved, armature, ratio, factor, flywheel, servo_armature, model.spring_drive(joint)};
       c.damping = damping_on(asset, joint, c.driven);
       c.max_time_constant = max_time_constant;
+      c.harmless_effect = rule_option(info_, settings, "harmless_follower_effect");
       if (crutch(c)) c.shared = shared_by_a_steady_drive(model, asset, joint);
       // Only on the robot's own parts: an object hung from the world (a puck, a leaf) is what
       // the task moves, and a flywheel there changes the task whatever set the value.
       const physics::Body* parent = model.articulation().side(joint, 0);
       if (joint.actuation == Actuation::Passive && parent && !parent->world)
         c.motor_literal = actuated_sharing_literal(asset, joint);
+      if (joint.actuation == Actuation::Passive || joint.actuation == Actuation::Linkage)
+        c.effect = follower_effect(model, asset, joint, armature);
       if (joint.actuation == Actuation::Passive && touches_nothing(model.articulation(), asset, joint)) {
         report_isolated(c, out);
         continue;
@@ -106,6 +110,46 @@ class ArmatureExcessive final : public Rule {
     return moved;
   }
 
+  // What a mimic follower's armature does to the drive of the joint it follows: the leader's
+  // servo on the mechanism's Jᵀ·M·J with it and without it (armature × multiplier² less).
+  struct FollowerEffect {
+    const Joint* leader = nullptr;
+    double with = 0, without = 0;  // the mechanism's inertia along the leader, model units
+    double settle_with = 0, settle_without = 0;  // s: 1 / the servo's slowest decay rate
+    bool stable_with = false, stable_without = false;
+    std::string stability{};  // how stability was judged ("implicitfast's step", "the TGS bound")
+    double change() const { return std::abs(settle_with - settle_without) / settle_without; }
+  };
+
+  static std::optional<FollowerEffect> follower_effect(const DriveModel& model, const Asset& asset, const Joint& joint,
+                                                       double armature) {
+    const Joint* leader = joint.is_mimic() ? asset.followed_joint(joint) : nullptr;
+    if (!leader || leader->hidden_load) return std::nullopt;
+    const std::optional<DrivenJoint> driven = model.spring_drive(*leader);
+    if (!driven || driven->acceleration() || !driven->damping_known() || !(driven->damping > 0)) return std::nullopt;
+    const physics::ArticulatedInertia mechanism = physics::mechanism_inertia(model.articulation(), asset, *leader);
+    const double gearing = joint.mimic->multiplier.value;
+    FollowerEffect e{leader, mechanism.value, mechanism.value - armature * gearing * gearing};
+    if (!mechanism.known || !(e.without > 0)) return std::nullopt;
+    const physics::SimulationRate& rate = driven->rate;
+    const auto judge = [&](double inertia, double& settle, bool& stable) {
+      const physics::Servo servo = rate.solver == physics::Solver::MuJoCo
+                                       ? mujoco_servo(*driven, inertia)
+                                       : physics::Servo{inertia, driven->stiffness, 0, driven->damping};
+      settle = 1 / physics::slowest_decay_rate(servo);
+      stable = rate.solver == physics::Solver::MuJoCo
+                   ? physics::step_verdict(rate.integrator, rate.h(), servo) == physics::StepVerdict::Decays
+                   : physics::natural_frequency(driven->stiffness, inertia) <= rate.frequency_bound();
+    };
+    judge(e.with, e.settle_with, e.stable_with);
+    judge(e.without, e.settle_without, e.stable_without);
+    if (!std::isfinite(e.settle_with) || !std::isfinite(e.settle_without)) return std::nullopt;
+    e.stability = rate.solver == physics::Solver::MuJoCo
+                      ? fmt::format("{}'s step", physics::integrator_name(rate.integrator))
+                      : fmt::format("the {} bound", physics::solver_name(rate.solver));
+    return e;
+  }
+
   struct Candidate {
     const Joint& joint;
     const physics::EffectiveInertia& lighter;
@@ -120,6 +164,8 @@ class ArmatureExcessive final : public Rule {
     const Joint* motor_literal = nullptr;  // passive: an actuated joint whose armature is the same literal
     double damping = 0;            // what damps the joint's speed, model units (0: none known)
     double max_time_constant = 0;  // s
+    std::optional<FollowerEffect> effect{};  // a mimic follower's: what its armature does to the leader's drive
+    double harmless_effect = 0;            // the settling change under which an unchanged stability is harmless
     // How soon the joint's speed settles under its damping, armature included (0: no damping).
     double lag() const { return damping > 0 ? physics::inertial_time_constant(armature + moved.value, damping) : 0; }
     // The damper, not the armature, sets how the joint moves on anything slower than the lag.
@@ -219,6 +265,10 @@ class ArmatureExcessive final : public Rule {
                            "it reaches this joint as a side effect. Give the passive joints armature 0 (their own "
                            "class) if they should swing freely.",
                            joint_label(*c.motor_literal)));
+      return;
+    }
+    if (c.effect && c.effect->change() < c.harmless_effect && c.effect->stable_with == c.effect->stable_without) {
+      report_harmless_follower(c, at, amount, times, against, out);
       return;
     }
     if (joint.actuation == Actuation::Passive || joint.actuation == Actuation::Linkage) {
@@ -345,6 +395,31 @@ class ArmatureExcessive final : public Rule {
     if (c.driven && c.driven->rate.solver == physics::Solver::MuJoCo && !c.driven->damping_known())
       d.note(fmt::format("Whether the drive needs it to stay stable was not judged: {}.", c.driven->drive->damping_unknown));
     drive_effect(c, d);
+  }
+
+  // A follower's armature judged by its effect: the leader's servo settles as fast without it,
+  // and its step is as stable. A heavily damped servo closes at the pace kv/kp sets, whatever
+  // the inertia, so a large ratio to the follower's own link can change nothing.
+  void report_harmless_follower(const Candidate& c, const Span& at, const std::string& amount, const std::string& times,
+                                const std::string& against, Reporter& out) const {
+    const FollowerEffect& e = *c.effect;
+    Diagnostic& d = out.report(at, Severity::Info,
+                               fmt::format("armature {} of mimic follower {} ({}× {}) changes its leader's drive by {} %",
+                                           amount, short_name(c.joint), times, against,
+                                           format_number(e.change() * 100, 2)));
+    d.note(moved_text(c));
+    d.note(e.leader->name.span,
+           fmt::format("Through its multiplier {} the armature adds {} {} to the mechanism that {} drives (Jᵀ·M·J: {} with it, "
+                       "{} without). The drive settles with a time constant of {} s with it and {} s without (1 / the "
+                       "servo's slowest decay rate), and its stability under {} is the same ({}).",
+                       format_number(c.joint.mimic->multiplier.value), format_number(e.with - e.without, 3), c.unit(),
+                       joint_label(*e.leader), format_number(e.with, 3), format_number(e.without, 3),
+                       format_number(e.settle_with, 3), format_number(e.settle_without, 3), e.stability,
+                       e.stable_with ? "stable both ways" : "unstable both ways"));
+    d.note(fmt::format("Under harmless_follower_effect ({} %): the follower's armature is inertia the real mechanism "
+                       "does not have, but it changes nothing the drive does; remove it if the model should match the "
+                       "mechanism.",
+                       format_number(c.harmless_effect * 100)));
   }
 
   // The natural frequency the drive would have without its armature, when the drive would then
@@ -486,6 +561,9 @@ class ArmatureExcessive final : public Rule {
                   {"servo_armature", 0.0014,
                    "a hinge armature up to this (kg·m²) is what a small smart servo reflects (Dynamixel XL330: "
                    "1.7e-8 kg·m² × 288²) and is never judged a flywheel, however light the load"},
+                  {"harmless_follower_effect", 0.01,
+                   "a mimic follower's armature that changes its leader's drive settling time by less than this "
+                   "fraction, and not its stability, is an info"},
                   {"max_time_constant", 0.2,
                    "no flywheel when the joint's damping settles its speed, armature included, within this many "
                    "seconds"}}};
