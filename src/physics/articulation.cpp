@@ -8,41 +8,12 @@
 #include <deque>
 #include <numeric>
 
+#include "physics/spatial.h"
 #include "util/numbers.h"
 
 namespace assetlint::physics {
 
 namespace {
-
-using Vector6 = Eigen::Matrix<double, 6, 1>;
-using Matrix6 = Eigen::Matrix<double, 6, 6>;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
-// Spatial inertia about the body origin, [angular; linear] ordering.
-Matrix6 spatial_inertia(double mass, const Eigen::Vector3d& com, const Eigen::Matrix3d& about_com) {
-  const Eigen::Matrix3d c = skew(com);
-  Matrix6 inertia;
-  inertia.topLeftCorner<3, 3>() = about_com + mass * c * c.transpose();
-  inertia.topRightCorner<3, 3>() = mass * c;
-  inertia.bottomLeftCorner<3, 3>() = mass * c.transpose();
-  inertia.bottomRightCorner<3, 3>() = mass * Eigen::Matrix3d::Identity();
-  return inertia;
-}
-
-// Motion transform from parent to child coordinates, the child frame placed in the parent at `pose`.
-Matrix6 motion_transform(const Eigen::Isometry3d& pose) {
-  const Eigen::Matrix3d e = pose.linear().transpose();
-  Matrix6 x = Matrix6::Zero();
-  x.topLeftCorner<3, 3>() = e;
-  x.bottomRightCorner<3, 3>() = e;
-  x.bottomLeftCorner<3, 3>() = -e * skew(pose.translation());
-  return x;
-}
 
 bool is_multi_dof(JointType type) {
   return type == JointType::Floating || type == JointType::Planar || type == JointType::Spherical ||
@@ -260,6 +231,26 @@ void Articulation::build(const Asset& asset, FreeRoot free_root, MissingMass mis
     } else {
       tj.motion.head<3>() = axis;
       tj.motion.tail<3>() = in_child.translation().cross(axis);
+    }
+    const auto rotation_about = [&](const Eigen::Vector3d& pivot, const Eigen::Vector3d& direction) {
+      Vector6 s;
+      s << direction, pivot.cross(direction);
+      return s;
+    };
+    if (!is_multi_dof(joint->type)) {
+      tj.dof_motions = {tj.motion};
+    } else if (joint->type == JointType::Spherical || joint->type == JointType::Floating) {
+      // The child link's own axes, in its body's frame.
+      const int link = side_index(*joint, forward ? 1 : 0);
+      const Eigen::Matrix3d axes =
+          link < 0 ? Eigen::Matrix3d(Eigen::Matrix3d::Identity()) : Eigen::Matrix3d(link_pose[static_cast<std::size_t>(link)].linear());
+      if (joint->type == JointType::Floating)
+        for (int k = 0; k < 3; ++k) {
+          Vector6 s = Vector6::Zero();
+          s.tail<3>() = tj.child_in_parent.linear().transpose().col(k);
+          tj.dof_motions.push_back(s);
+        }
+      for (int k = 0; k < 3; ++k) tj.dof_motions.push_back(rotation_about(in_child.translation(), axes.col(k)));
     }
     return tj;
   };

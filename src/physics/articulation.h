@@ -40,6 +40,11 @@ struct TreeJoint {
   Eigen::Isometry3d child_in_parent = Eigen::Isometry3d::Identity();  // at q = 0
   double armature = 0;
   bool modelled = true;  // false for multi-DOF joints: the trees holding one stay unknown
+  // Every degree of freedom's motion in the child body frame at q = 0, in MuJoCo's order: a
+  // hinge or slide has one (= motion); a ball joint three rotations about the child frame's
+  // axes through the joint; a free joint three translations along the parent frame's axes,
+  // then three rotations about the child frame's axes. Empty for a planar or generic joint.
+  std::vector<Eigen::Matrix<double, 6, 1>> dof_motions;
 };
 
 // What a joint's drive row sees.
@@ -50,6 +55,8 @@ struct ArticulatedInertia {
   std::vector<std::string> unknown_links;  // why not known: bodies in the articulation without mass
   std::string reason;                      // when not known and no link is to blame
 };
+
+class JointSpaceMatrix;
 
 class Articulation {
  public:
@@ -104,6 +111,7 @@ class Articulation {
   bool translates_only(const Link& link) const;
 
  private:
+  friend class JointSpaceMatrix;
   void build(const Asset& asset, FreeRoot free_root, MissingMass missing);
   void solve();
 
