@@ -103,6 +103,7 @@ class DriveDampingRatio final : public Rule {
                          describe_gain(drive.stiffness, driven->stiffness, stiffness_unit(joint)),
                          format_number(inertia, 3), format_number(ratio, 3), driven->inertia_text()));
       if (!drive.damping_origin.empty()) d.note(drive.damping_origin + ".");
+      if (!drive.damping_other_release.empty()) d.note(drive.damping_other_release + ".");
       if (!driven->acceleration()) d.note(fmt::format("Inertias: {}.", driven->inertias_text()));
       if (!below && !steadies_stiff_spring && !load_left_out && !velocity_driven)
         d.note(fmt::format("So far above critical the drive acts as a first-order lag: its slow mode ω·(ζ − √(ζ² − 1)) "

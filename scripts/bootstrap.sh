@@ -37,10 +37,10 @@ packages=("${build_packages[@]}" "${test_packages[@]}")
 #    `node`, looked up on PATH);
 #  - three-usdz-loader 1.0.9 (npm, OpenUSD 22.11 compiled to WASM, ~9 MB) into tools/node_modules:
 #    the reference composition tests/usd_reference_test.cpp holds the USDA reader to;
-#  - mujoco-js 0.0.7 (npm, MuJoCo 3.3.8 compiled to WASM, ~11 MB) into tools/node_modules: the
-#    compiler tests/mujoco_reference_test.cpp holds the MJCF reader to.
+#  - @mujoco/mujoco 3.14.0 (npm, the official WebAssembly build of MuJoCo 3.14, ~11 MB) into
+#    tools/node_modules: the compiler tests/mujoco_reference_test.cpp holds the MJCF reader to.
 # The npm packages are skipped without npm, or with ASSET_LINT_SKIP_OPTIONAL=1.
-npm_tools=(@microsoft/sarif-multitool-linux physx-js-webidl three-usdz-loader mujoco-js)
+npm_tools=(@microsoft/sarif-multitool-linux physx-js-webidl three-usdz-loader @mujoco/mujoco)
 
 # installed_version ROOT NAME: the version of npm package NAME in ROOT/tools/node_modules, or nothing.
 installed_version() {
@@ -106,10 +106,10 @@ install_optional() {
     npm_install_tool "$root" three-usdz-loader 1.0.9 \
       || echo "bootstrap: warning: three-usdz-loader not installed; the OpenUSD reference test will be skipped"
   fi
-  if command -v npm >/dev/null 2>&1 && [ "$(installed_version "$root" mujoco-js)" != "0.0.7" ]; then
-    echo "bootstrap: (optional) installing mujoco-js 0.0.7 (MuJoCo 3.3.8 in WASM) into tools/node_modules"
-    npm_install_tool "$root" mujoco-js 0.0.7 \
-      || echo "bootstrap: warning: mujoco-js not installed; the MuJoCo reference test will be skipped"
+  if command -v npm >/dev/null 2>&1 && [ "$(installed_version "$root" @mujoco/mujoco)" != "3.14.0" ]; then
+    echo "bootstrap: (optional) installing @mujoco/mujoco 3.14.0 (MuJoCo 3.14 in WASM) into tools/node_modules"
+    npm_install_tool "$root" @mujoco/mujoco 3.14.0 \
+      || echo "bootstrap: warning: @mujoco/mujoco not installed; the MuJoCo reference test will be skipped"
   fi
   return 0
 }

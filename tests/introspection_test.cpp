@@ -46,6 +46,9 @@ TEST_CASE("introspection: --show-settings names where every value came from", "[
         "# velocity_iterations is not set: PhysX's 1\n"
         "# solver is not set: the stage's physxScene:solverType, else TGS\n"
         "\n"
+        "[mujoco]\n"
+        "version = \"3.15\"                         # default; dampratio derives kv as MuJoCo 3.15 and later\n"
+        "\n"
         "[gripper]\n"
         "# payload_kg is not set: no force derivation\n"
         "# friction is not set: no force derivation\n"
@@ -139,4 +142,33 @@ TEST_CASE("introspection: rule --all prints every page, rule --help is help", "[
   auto bare = run_cli({"rule"});
   CHECK(bare.exit_code == 2);
   CHECK(bare.err.rfind("asset-lint: error: usage: asset-lint rule RULE-ID", 0) == 0);
+}
+
+TEST_CASE("introspection: [mujoco] version selects MuJoCo's dampratio rule, shown with where it was set", "[introspection][mjcf]") {
+  TempDir dir;
+  write_file(dir.path() / "asset-lint.toml", "[mujoco]\nversion = \"3.14\"\n");
+  write_file(dir.path() / "arm.xml", read_file(assetlint::test::fixtures_dir() / "mjcf" / "dampratio" / "two_link_arm.xml"));
+  auto shown = run_cli({"--show-settings", "arm.xml"}, dir.path());
+  CHECK(shown.exit_code == 0);
+  CHECK(shown.out.find("[mujoco]\nversion = \"3.14\"                         # asset-lint.toml:2; dampratio derives kv as "
+                       "MuJoCo 3.3 to 3.14\n") != std::string::npos);
+  // The servos of the arm are critically damped on M₀ under 3.14's rule, at 0.553 under 3.15's.
+  write_file(dir.path() / "asset-lint.toml",
+             "select = [\"drive-damping-ratio\"]\n[rules.drive-damping-ratio]\nmin_ratio = 0.9\n[mujoco]\nversion = \"3.14\"\n");
+  CHECK(run_cli({"arm.xml"}, dir.path()).exit_code == 0);
+  write_file(dir.path() / "asset-lint.toml",
+             "select = [\"drive-damping-ratio\"]\n[rules.drive-damping-ratio]\nmin_ratio = 0.9\n[mujoco]\nversion = \"3.16.1\"\n");
+  auto later = run_cli({"arm.xml"}, dir.path());
+  CHECK(later.exit_code == 1);
+  CHECK(later.out.find("damping ratio 0.553 is below 0.9") != std::string::npos);
+  for (const auto& [value, message] : std::vector<std::pair<std::string, std::string>>{
+           {"3.15", "[mujoco] version must be a string such as \"3.15\" (a number cannot tell 3.1 from 3.10)"},
+           {"\"3.2\"", "[mujoco] version '3.2': asset-lint models MuJoCo 3.3 and later"},
+           {"\"latest\"", "[mujoco] version 'latest' is not a MuJoCo release such as \"3.15\""}}) {
+    write_file(dir.path() / "asset-lint.toml", "[mujoco]\nversion = " + value + "\n");
+    auto bad = run_cli({"arm.xml"}, dir.path());
+    INFO(bad.err);
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.err.find(message) != std::string::npos);
+  }
 }

@@ -1,8 +1,12 @@
-// MJCF dampratio: the damping asset-lint derives equals the kv MuJoCo 3.3.8 compiles for the
-// same files (numbers from tests/mujoco_reference/compile.mjs; the reference test re-checks
-// them whenever Node and mujoco-js are there), the precedence of kv and dampratio, and an
-// unknown inertia leaving the damping unknown, never 0.
+// MJCF dampratio: the damping asset-lint derives equals the kv MuJoCo compiles for the same
+// files under each release's rule: 3.3 to 3.14 on M₀ (numbers compiled by MuJoCo 3.14), 3.15
+// and later on (J·M⁻¹·Jᵀ)⁻¹ (numbers tests/mujoco_reference/compile.mjs forms from MuJoCo's
+// own mass matrix; the reference test re-checks both whenever Node and @mujoco/mujoco are
+// there); the precedence of kv and dampratio, and an unknown inertia leaving the damping
+// unknown, never 0.
 #include <catch2/catch.hpp>
+
+#include <cmath>
 
 #include "engine/file_system.h"
 #include "formats/mjcf/mjcf_reader.h"
@@ -13,13 +17,23 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-ReadResult read_fixture(const std::string& name) {
-  const auto path = test::fixtures_dir() / "mjcf" / "dampratio" / name;
-  return mjcf::read_mjcf(std::make_shared<const SourceFile>(path.string(), test::read_file(path)), DiskFileSystem{});
+using physics::DampRatioRule;
+
+mjcf::ReadOptions under(DampRatioRule rule) {
+  mjcf::ReadOptions options;
+  options.dampratio_rule = rule;
+  return options;
 }
 
-ReadResult read_text(const std::string& text) {
-  return mjcf::read_mjcf(std::make_shared<const SourceFile>("m/model.xml", text), DiskFileSystem{});
+// By default as MuJoCo 3.3 to 3.14 compile it.
+ReadResult read_fixture(const std::string& name, DampRatioRule rule = DampRatioRule::JointSpaceDiagonal) {
+  const auto path = test::fixtures_dir() / "mjcf" / "dampratio" / name;
+  return mjcf::read_mjcf(std::make_shared<const SourceFile>(path.string(), test::read_file(path)), DiskFileSystem{},
+                         under(rule));
+}
+
+ReadResult read_text(const std::string& text, DampRatioRule rule = DampRatioRule::JointSpaceDiagonal) {
+  return mjcf::read_mjcf(std::make_shared<const SourceFile>("m/model.xml", text), DiskFileSystem{}, under(rule));
 }
 
 double damping(const Asset& asset, const char* joint) {
@@ -33,14 +47,45 @@ double damping(const Asset& asset, const char* joint) {
 
 }  // namespace
 
-TEST_CASE("dampratio from a default class compiles to MuJoCo's kv (G1-style leg)", "[mjcf][dampratio]") {
+TEST_CASE("dampratio from a default class compiles to MuJoCo 3.14's kv (G1-style leg)", "[mjcf][dampratio]") {
   const ReadResult r = read_fixture("g1_style_leg.xml");
   REQUIRE(r.usable);
   CHECK_THAT(damping(r.asset, "hip_pitch"), WithinRel(22.685733428743276, 1e-12));
   CHECK_THAT(damping(r.asset, "knee"), WithinRel(10.924976741394007, 1e-12));
   CHECK_THAT(damping(r.asset, "ankle_roll"), WithinRel(1.2715722551235518, 1e-12));
   const Joint* hip = r.asset.find_joint("hip_pitch");
-  CHECK(hip->drive->damping_origin.find("kv = 2·ζ·√(kp·M₀) = 2 × 1 × √(150 × 0.857738 kg·m²)") != std::string::npos);
+  CHECK(hip->drive->damping_origin.find("MuJoCo 3.3 to 3.14 derive kv from dampratio: kv = 2·ζ·√(kp·M₀) = 2 × 1 × "
+                                        "√(150 × 0.857738 kg·m²)") != std::string::npos);
+  // 3.15 derives a fifth of it: the note says so.
+  CHECK(hip->drive->damping_other_release.find("MuJoCo 3.15 and later derive kv = 4.50259 instead") != std::string::npos);
+}
+
+TEST_CASE("MuJoCo 3.15's dampratio: kv on 1/(M⁻¹)ᵢᵢ, a floating base free (G1-style leg)", "[mjcf][dampratio]") {
+  const ReadResult r = read_fixture("g1_style_leg.xml", DampRatioRule::OperationalSpace);
+  REQUIRE(r.usable);
+  // kv_operational from compile.mjs: 2·ζ·√(kp·(J·M⁻¹·Jᵀ)⁻¹) on MuJoCo 3.14's mass matrix.
+  CHECK_THAT(damping(r.asset, "hip_pitch"), WithinRel(4.502592419179164, 1e-9));
+  CHECK_THAT(damping(r.asset, "knee"), WithinRel(6.450430554157439, 1e-9));
+  CHECK_THAT(damping(r.asset, "ankle_roll"), WithinRel(1.2571250356640757, 1e-9));
+  const Joint* hip = r.asset.find_joint("hip_pitch");
+  CHECK(hip->drive->damping_origin.find("MuJoCo 3.15 and later derive kv from dampratio: kv = 2·ζ·√(kp·m)") !=
+        std::string::npos);
+  CHECK(hip->drive->damping_other_release.find("MuJoCo 3.3 to 3.14 derive kv = 22.6857 instead (5.04× this)") !=
+        std::string::npos);
+  // Within 10 % the other release is not mentioned: the ankle's foot couples little.
+  CHECK(r.asset.find_joint("ankle_roll")->drive->damping_other_release.empty());
+}
+
+TEST_CASE("MuJoCo 3.15's dampratio on a two-link arm: the docs' worked example", "[mjcf][dampratio]") {
+  const ReadResult old_rule = read_fixture("two_link_arm.xml");
+  const ReadResult new_rule = read_fixture("two_link_arm.xml", DampRatioRule::OperationalSpace);
+  REQUIRE(old_rule.usable);
+  REQUIRE(new_rule.usable);
+  // M₀: 0.27 and 0.03 kg·m²; 1/(M⁻¹)ᵢᵢ = M₁₁ − M₁₂²/M₂₂ = 0.0825 and M₂₂ − M₁₂²/M₁₁ = 0.03 − 0.075²/0.27.
+  CHECK_THAT(damping(old_rule.asset, "shoulder"), WithinRel(2 * std::sqrt(100 * 0.27), 1e-12));
+  CHECK_THAT(damping(old_rule.asset, "elbow"), WithinRel(2 * std::sqrt(100 * 0.03), 1e-12));
+  CHECK_THAT(damping(new_rule.asset, "shoulder"), WithinRel(2 * std::sqrt(100 * 0.0825), 1e-12));
+  CHECK_THAT(damping(new_rule.asset, "elbow"), WithinRel(2 * std::sqrt(100 * (0.03 - 0.075 * 0.075 / 0.27)), 1e-12));
 }
 
 TEST_CASE("element kv beats a class dampratio, an element dampratio its own, joint damping adds (TIAGo-style arm)",

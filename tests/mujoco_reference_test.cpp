@@ -1,10 +1,15 @@
 // MuJoCo's own compiler as the reference for the MJCF reader: tests/mujoco_reference/compile.mjs
-// compiles every MJCF fixture and corpus model with MuJoCo 3.3 (npm mujoco-js, WASM, run with
-// Node) and this file holds asset-lint's model of the same file to what MuJoCo compiled:
+// compiles every MJCF fixture and corpus model with MuJoCo 3.14 (npm @mujoco/mujoco, the official
+// WebAssembly build, run with Node) and this file holds asset-lint's model of the same file to
+// what MuJoCo compiled:
 //   joints: range (after autolimits and <compiler angle>), damping, armature, and the
 //     joint-space inertia diagonal at qpos0 (dof_M0);
 //   servos on a joint: stiffness kp·g², damping kv·g² + joint damping (kv derived from
-//     dampratio), force bound |forcerange|·|g|; motors: the effort bound;
+//     dampratio as 3.14 compiles it, on dof_M0), force bound |forcerange|·|g|; motors: the
+//     effort bound;
+//   a servo's kv from dampratio as MuJoCo 3.15 derives it: on the operational-space inertia
+//     (J·M⁻¹·Jᵀ)⁻¹ at qpos0, which compile.mjs computes from the oracle's own mass matrix
+//     (mj_fullM) and actuator moments (compared at 1e-6: a dense inverse each side);
 //   joint equalities: the mimic asset-lint makes of them.
 // Values agree to 1e-9 relative; every difference is listed by model, element and both values.
 // What asset-lint deliberately does not model is counted and listed apart (kDeliberate below).
@@ -26,6 +31,7 @@
 #include "formats/mjcf/mjcf_reader.h"
 #include "engine/settings.h"
 #include "physics/articulation.h"
+#include "physics/joint_space_matrix.h"
 #include "pipeline/lint.h"
 #include "test_support.h"
 
@@ -114,7 +120,15 @@ bool from_geoms(const Asset& asset, const physics::ArticulatedInertia& inertia) 
 
 void compare_model(const fs::path& path, const nlohmann::json& compiled, Comparison& c) {
   const DiskFileSystem disk;
-  const ReadResult read = mjcf::read_mjcf(std::make_shared<const SourceFile>(path.string(), read_file(path)), disk);
+  // MuJoCo 3.14 compiles dampratio as 3.3 did (M₀): the reader with that rule is held to the
+  // compiled gains; the reader with 3.15's rule to the kv the script computes from the
+  // oracle's own mass matrix and actuator moments, (J·M⁻¹·Jᵀ)⁻¹ at qpos0.
+  const auto read_as = [&](physics::DampRatioRule rule) {
+    mjcf::ReadOptions options;
+    options.dampratio_rule = rule;
+    return mjcf::read_mjcf(std::make_shared<const SourceFile>(path.string(), read_file(path)), disk, options);
+  };
+  const ReadResult read = read_as(physics::DampRatioRule::JointSpaceDiagonal);
   if (!compiled["error"].is_null()) {
     // What MuJoCo refuses to compile, asset-lint reports as an error (reader or rule).
     const FileReport report = lint_file(path.string(), Settings{});
@@ -138,6 +152,10 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
   REQUIRE(read.usable);
   const Asset& asset = read.asset;
   const physics::Articulation articulation(asset);
+  const ReadResult read_315 = read_as(physics::DampRatioRule::OperationalSpace);
+  REQUIRE(read_315.usable);
+  REQUIRE(read_315.asset.joints.size() == asset.joints.size());
+  const physics::JointSpaceMatrix matrix(articulation);
 
   // MuJoCo's joints in order are asset-lint's movable joints in order (bodies depth first).
   std::vector<const Joint*> ours;
@@ -277,6 +295,24 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
         c.differences.push_back(fmt::format("{}: {} damping: MuJoCo {}, asset-lint unknown ({})", c.model, element,
                                             number(kv * g * g + joint_damping), drive.damping_unknown));
       }
+      // MuJoCo 3.15's rule, held to the oracle's (J·M⁻¹·Jᵀ)⁻¹.
+      if (!a["dampratio"].is_null()) {
+        const Joint& joint_315 = read_315.asset.joints[*asset.index_of(joint)];
+        const Drive* drive_315 = joint_315.drive ? &*joint_315.drive : nullptr;
+        if (a["kv_operational"].is_null()) {
+          c.skip(kStandIn, element + " kv (3.15)");
+        } else if (drive_315 && drive_315->damping_unknown.empty()) {
+          c.value("damping from dampratio, MuJoCo 3.15 rule (kv·g² from (J·M⁻¹·Jᵀ)⁻¹ + dampers' kv·g² + joint damping)",
+                  element, a["kv_operational"].get<double>() * g * g + damper_kv[&joint] + joint_damping,
+                  drive_315->damping ? std::optional(drive_315->damping->value) : std::nullopt, 1e-6);
+        } else if (from_geoms(asset, matrix.operational_inertia(joint))) {
+          c.skip(kGeomInertia, element + " kv (3.15)");
+        } else {
+          c.differences.push_back(fmt::format("{}: {} damping (3.15 rule): MuJoCo {}, asset-lint unknown ({})", c.model,
+                                              element, number(a["kv_operational"].get<double>() * g * g + joint_damping),
+                                              drive_315 ? drive_315->damping_unknown : "no drive"));
+        }
+      }
       if (a["forcelimited"].get<bool>())
         c.value("max force", element, force_bound(a["forcerange"], std::abs(g)),
                 drive.max_force ? std::optional(drive.max_force->value) : std::nullopt);
@@ -334,11 +370,11 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
 
 // `base`: the directory model paths are named relative to in the listing.
 void hold_to_mujoco(const std::vector<fs::path>& models, const fs::path& base) {
-    const auto package = source_dir() / "tools" / "node_modules" / "mujoco-js";
+  const auto package = source_dir() / "tools" / "node_modules" / "@mujoco" / "mujoco";
   std::string missing;
   if (!assetlint::test::on_path("node")) missing = "node not found on PATH";
-  else if (!fs::exists(package / "dist" / "mujoco_wasm.js"))
-    missing = "mujoco-js is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
+  else if (!fs::exists(package / "mujoco.js"))
+    missing = "@mujoco/mujoco is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
   if (!missing.empty()) {
     if (assetlint::test::in_ci()) FAIL("MuJoCo reference missing in CI: " << missing);
     WARN("MuJoCo reference test skipped: " << missing);

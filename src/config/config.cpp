@@ -36,6 +36,7 @@ class Loader {
       else if (name == "rules") rules(table(node, name));
       else if (name == "xacro") xacro(table(node, name));
       else if (name == "usd") usd(table(node, name));
+      else if (name == "mujoco") mujoco(table(node, name));
       else unknown(key, "");
     }
     // After the loop: `extend-select` adds to `select` wherever the two stand in the file.
@@ -183,6 +184,21 @@ class Loader {
         if (variant.empty()) fail(value, fmt::format("[usd] variants: the variant of '{}' is empty", set.str()));
         settings_.usd.variants[std::string(set.str())] = Configured<std::string>{variant, origin(value)};
       }
+    }
+  }
+
+  // [mujoco] version = "3.15"
+  void mujoco(const toml::table& t) {
+    for (const auto& [key, node] : t) {
+      if (key.str() != "version") unknown(key, "mujoco");
+      if (!node.is_string())
+        fail(node, "[mujoco] version must be a string such as \"3.15\" (a number cannot tell 3.1 from 3.10)");
+      const std::string text = node.as_string()->get();
+      const auto version = parse_mujoco_version(text);
+      if (!version) fail(node, fmt::format("[mujoco] version '{}' is not a MuJoCo release such as \"3.15\"", text));
+      if (std::make_pair(version->major, version->minor) < std::make_pair(3, 3))
+        fail(node, fmt::format("[mujoco] version '{}': asset-lint models MuJoCo 3.3 and later", text));
+      settings_.mujoco.version = Configured<std::string>{text, origin(node)};
     }
   }
 

@@ -1,8 +1,27 @@
 #include "engine/settings.h"
 
 #include <algorithm>
+#include <charconv>
 
 namespace assetlint {
+
+std::optional<MujocoVersion> parse_mujoco_version(std::string_view text) {
+  int parts[3] = {0, 0, 0};
+  int count = 0;
+  const char* at = text.data();
+  const char* end = text.data() + text.size();
+  while (count < 3) {
+    const auto [next, error] = std::from_chars(at, end, parts[count]);
+    if (error != std::errc() || next == at) return std::nullopt;
+    ++count;
+    at = next;
+    if (at == end) break;
+    if (*at != '.') return std::nullopt;
+    ++at;
+  }
+  if (at != end || count < 2) return std::nullopt;
+  return MujocoVersion{parts[0], parts[1]};
+}
 
 bool glob_match(std::string_view pattern, std::string_view text) {
   // Iterative '*' / '?' matcher with single-star backtracking: linear in practice.

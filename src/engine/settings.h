@@ -96,10 +96,27 @@ struct UsdSettings {
   std::map<std::string, Configured<std::string>, std::less<>> variants;
 };
 
+// A MuJoCo release, major.minor.
+struct MujocoVersion {
+  int major = 3;
+  int minor = 15;
+};
+
+// "3.15" or "3.15.0" (the patch is accepted and ignored); nothing when the text is no version.
+std::optional<MujocoVersion> parse_mujoco_version(std::string_view text);
+
+// [mujoco]: the MuJoCo an MJCF model is judged for. The default, "3.15", stands for 3.15 and
+// later; "3.3" to "3.14" select what those releases compile differently (physics/dampratio.h).
+struct MujocoSettings {
+  Configured<std::string> version{"3.15", "default"};
+  MujocoVersion parsed() const { return parse_mujoco_version(version.value).value_or(MujocoVersion{}); }
+};
+
 struct Settings {
   RuleSelection selection;
   XacroSettings xacro;
   UsdSettings usd;
+  MujocoSettings mujoco;
   std::vector<PerFileIgnore> per_file_ignores;
   SimulationSettings simulation;
   GripperSpec gripper;

@@ -102,6 +102,9 @@ struct Drive {
   std::string damping_unknown;
   // A damping the file does not write but the engine derives (MJCF dampratio): how, with numbers.
   std::string damping_origin;
+  // What another release of the engine derives instead, when that differs by more than 10 %
+  // (MJCF dampratio before and after MuJoCo 3.15); empty otherwise.
+  std::string damping_other_release;
   OptQuantity max_force;   // N·m or N; unset = unlimited
   DriveType type = DriveType::Force;
   Span type_span;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "physics/dampratio.h"
 #include "rules/registry.h"
 #include "util/numbers.h"
 
@@ -115,6 +116,11 @@ void write_settings(std::ostream& out, const std::string& file, const Settings& 
   if (settings.simulation.solver)
     line(out, fmt::format("solver = \"{}\"", settings.simulation.solver->value), settings.simulation.solver->origin);
   else out << "# solver is not set: the stage's physxScene:solverType, else TGS\n";
+
+  out << "\n[mujoco]\n";
+  line(out, fmt::format("version = \"{}\"", settings.mujoco.version.value),
+       fmt::format("{}; dampratio derives kv as {}", settings.mujoco.version.origin,
+                   physics::dampratio_rule_versions(physics::dampratio_rule(settings.mujoco.parsed()))));
 
   const GripperSpec& g = settings.gripper;
   out << "\n[gripper]\n";

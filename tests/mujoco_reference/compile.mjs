@@ -1,8 +1,10 @@
-// Compiles MJCF models with MuJoCo itself (npm mujoco-js: MuJoCo 3.3 compiled to WASM) and
-// prints, as JSON, what its compiler made of them: per joint its range, damping, armature and
-// joint-space inertia at qpos0; per actuator its gains, gear and ranges; the joint equalities.
+// Compiles MJCF models with MuJoCo itself (npm @mujoco/mujoco: the official WebAssembly build,
+// MuJoCo 3.14) and prints, as JSON, what its compiler made of them: per joint its range,
+// damping, armature and joint-space inertia at qpos0; per actuator its gains, gear and ranges,
+// and the inertia it reflects at qpos0 both ways MuJoCo has defined it (below); the joint
+// equalities.
 //
-//   node compile.mjs <mujoco-js package dir> <model.xml>...
+//   node compile.mjs <@mujoco/mujoco package dir> <model.xml>...
 //
 // Each model and the files it <include>s are written into MuJoCo's in-memory file system at
 // their paths relative to the model. Mesh and texture files that are absent (public models are
@@ -19,13 +21,13 @@ import { pathToFileURL } from 'node:url';
 
 const [packageDir, ...models] = process.argv.slice(2);
 if (!packageDir || models.length === 0) {
-  console.error('usage: node compile.mjs <mujoco-js package dir> <model.xml>...');
+  console.error('usage: node compile.mjs <@mujoco/mujoco package dir> <model.xml>...');
   process.exit(2);
 }
-const load = (await import(pathToFileURL(path.join(packageDir, 'dist', 'mujoco_wasm.js')).href)).default;
+const load = (await import(pathToFileURL(path.join(packageDir, 'mujoco.js')).href)).default;
 // MuJoCo prints its runtime warnings (a full contact buffer at the first step, …) on the
 // module's stdout, where this script writes its JSON: send them to stderr.
-const mj = await load({ print: (text) => process.stderr.write(`${text}\n`) });
+const mj = await load({ print: (text) => process.stderr.write(`${text}\n`), printErr: (text) => process.stderr.write(`${text}\n`) });
 
 // The <include file=...> names in a text (MuJoCo resolves them against the model's directory).
 function includes(text) {
@@ -108,19 +110,62 @@ function* elements(spec, type) {
   for (let e = mj.mjs_firstElement(spec, type); e; e = mj.mjs_nextElement(spec, e)) yield e;
 }
 
-// MuJoCo's compiler errors arrive as C++ exceptions whose object (mjCError, mjXError) starts
-// with the message text; the module exports no heap, but any model array is a view on it.
-mj.FS.writeFile('/empty.xml', '<mujoco/>');
-const heapOwner = mj.MjModel.loadFromXML('/empty.xml');
+// MuJoCo's compiler errors arrive as JavaScript errors whose message is MuJoCo's text.
 function describe(err) {
-  if (err?.excPtr !== undefined) {
-    const heap = new Uint8Array(heapOwner.names.buffer);
-    let end = err.excPtr;
-    while (end < heap.length && end < err.excPtr + 1000 && heap[end] !== 0) ++end;
-    const text = Buffer.from(heap.subarray(err.excPtr, end)).toString('utf8').replace(/\s+/g, ' ').trim();
-    return `${err.name}: ${text}`;
+  return String(err?.message ?? err).replace(/\s+/g, ' ').trim();
+}
+
+// The inverse of a symmetric positive definite n×n matrix (row-major), by Cholesky; null when
+// it is not positive definite.
+function invert(a, n) {
+  const L = new Float64Array(n * n);
+  for (let j = 0; j < n; ++j) {
+    let diag = a[j * n + j];
+    for (let k = 0; k < j; ++k) diag -= L[j * n + k] * L[j * n + k];
+    if (!(diag > 0)) return null;
+    L[j * n + j] = Math.sqrt(diag);
+    for (let i = j + 1; i < n; ++i) {
+      let v = a[i * n + j];
+      for (let k = 0; k < j; ++k) v -= L[i * n + k] * L[j * n + k];
+      L[i * n + j] = v / L[j * n + j];
+    }
   }
-  return String(err?.message ?? err);
+  const inv = new Array(n * n).fill(0);
+  for (let c = 0; c < n; ++c) {
+    const y = new Float64Array(n);  // L y = e_c, then Lᵀ x = y
+    for (let i = 0; i < n; ++i) {
+      let v = i === c ? 1 : 0;
+      for (let k = 0; k < i; ++k) v -= L[i * n + k] * y[k];
+      y[i] = v / L[i * n + i];
+    }
+    for (let i = n - 1; i >= 0; --i) {
+      let v = y[i];
+      for (let k = i + 1; k < n; ++k) v -= L[k * n + i] * inv[k * n + c];
+      inv[i * n + c] = v / L[i * n + i];
+    }
+  }
+  return inv;
+}
+
+// The model's boolean arrays (jnt_limited, actuator_ctrllimited, …): the bindings of 3.14 cannot
+// hand out mjtByte arrays, so they are read from mj_printModel's listing, which gives each
+// element a section ("JOINT 3:") with one line per field.
+function booleans(m) {
+  mj.mj_printModel(m, '/listing.txt');
+  const values = new Map();
+  let section = null;
+  for (const line of mj.FS.readFile('/listing.txt', { encoding: 'utf8' }).split('\n')) {
+    const head = line.match(/^([A-Z_]+) (\d+):\s*$/);
+    if (head) { section = `${head[1]} ${head[2]}`; continue; }
+    const field = line.match(/^\s+(\w+limited|eq_active0)\s+(-?\d+)/);
+    if (section && field) values.set(`${section} ${field[1]}`, field[2] === '1');
+  }
+  mj.FS.unlink('/listing.txt');
+  return (kind, index, key) => {
+    const v = values.get(`${kind} ${index} ${key}`);
+    if (v === undefined) throw new Error(`mj_printModel lists no ${key} for ${kind} ${index}`);
+    return v;
+  };
 }
 
 let run = 0;
@@ -158,7 +203,7 @@ function compile(modelPath) {
 
   // Bodies (document order = the compiled model's body order) whose mass properties MuJoCo
   // takes from their geoms, and which of those hold a stand-in mesh.
-  const fromGeoms = compiler.inertiafromgeom === 1;  // mjINERTIAFROMGEOM_TRUE
+  const fromGeoms = compiler.inertiafromgeom === mj.mjtInertiaFromGeom.mjINERTIAFROMGEOM_TRUE;
   // Bodies whose <inertial> gives a full tensor: MuJoCo diagonalises it numerically
   // (mju_eig3), which is exact only to about 1e-6 relative.
   const guessed = [], diagonalised = [];
@@ -172,14 +217,21 @@ function compile(modelPath) {
       }
     }
     // Several geoms: MuJoCo sums their tensors and diagonalises the sum the same way.
-    diagonalised.push((body.explicitinertial === 1 && !fromGeoms && !Number.isNaN(body.fullinertia[0])) || geoms > 1);
+    diagonalised.push((body.explicitinertial && !fromGeoms && !Number.isNaN(body.fullinertia[0])) || geoms > 1);
     guessed.push(standin);
+  }
+  // The damping ratio each actuator asks for (document order = the compiled model's order):
+  // a position-like actuator (gainprm[0] = −biasprm[1]) with biasprm[2] > 0.
+  const dampratios = [];
+  for (const e of elements(spec, mj.mjtObj.mjOBJ_ACTUATOR)) {
+    const a = mj.mjs_asActuator(e);
+    dampratios.push(a.gainprm[0] === -a.biasprm[1] && a.biasprm[2] > 0 ? a.biasprm[2] : null);
   }
   spec.delete();
 
   let m;
   try {
-    m = mj.MjModel.loadFromXML(path.posix.join(root, path.basename(modelPath)));
+    m = mj.MjModel.from_xml_path(path.posix.join(root, path.basename(modelPath)));
   } catch (err) {
     return { model: modelPath, error: describe(err) };
   }
@@ -193,6 +245,7 @@ function compile(modelPath) {
     return end > adr ? Buffer.from(names.subarray(adr, end)).toString('utf8') : null;
   };
   const name = (kind, id) => nameAt(m[`name_${kind}adr`][id]);
+  const flag = booleans(m);
   const O = { mjOBJ_BODY: 'body', mjOBJ_JOINT: 'jnt', mjOBJ_ACTUATOR: 'actuator' };
 
   // A body's subtree holds a body whose inertia came from a stand-in mesh.
@@ -219,7 +272,6 @@ function compile(modelPath) {
         damping: m.dof_damping[i],
         armature: m.dof_armature[i],
         M0: tainted[body] ? null : m.dof_M0[i],
-        qM: tainted[body] ? null : d.qM[m.dof_Madr[i]],
       });
     }
     joints.push({
@@ -227,39 +279,83 @@ function compile(modelPath) {
       name: name(O.mjOBJ_JOINT, j),
       type: jointNames[type],
       body: name(O.mjOBJ_BODY, body),
-      limited: m.jnt_limited[j] === 1,
+      limited: flag('JOINT', j, 'jnt_limited'),
       range: [m.jnt_range[2 * j], m.jnt_range[2 * j + 1]],
       stiffness: m.jnt_stiffness[j],
-      actfrclimited: m.jnt_actfrclimited[j] === 1,
+      actfrclimited: flag('JOINT', j, 'jnt_actfrclimited'),
       actfrcrange: [m.jnt_actfrcrange[2 * j], m.jnt_actfrcrange[2 * j + 1]],
       dofs,
       inertia_excluded: tainted[body] ? 'a body it moves takes its mass from a stand-in mesh' : null,
       inertia_diagonalised: rounded[body],
     });
   }
-  const trnNames = ['joint', 'jointinparent', 'slidercrank', 'tendon', 'site', 'body'];
+  // The joint-space mass matrix M at qpos0 (dense) and its inverse, for the inertia an
+  // actuator reflects: a kinematic tree that moves a stand-in body has none.
+  const nv = m.nv;
+  const full = new mj.DoubleBuffer(nv * nv);
+  mj.mj_fullM(m, d, full);
+  const Minv = invert(Array.from(full.GetView()), nv);
+  full.delete();
+  const treeTainted = new Set();
+  for (let b = 1; b < m.nbody; ++b)
+    if (guessed.length === m.nbody && guessed[b] && m.body_weldid[b] !== 0) treeTainted.add(m.body_rootid[b]);
+
+  const trnNames = ['joint', 'jointinparent', 'slidercrank', 'tendon', 'site', 'body', 'so3'];
   const actuators = [];
-  for (let a = 0; a < m.nu; ++a) {
+  for (let a = 0; a < m.nactuator; ++a) {
     const trn = m.actuator_trntype[a];
     const target = m.actuator_trnid[2 * a];
     const jointTrn = trn === 0 || trn === 1;
     const prm = (arr, n) => Array.from(arr.slice(n * a, n * a + 3));
     const kvExcluded = jointTrn && tainted[m.jnt_bodyid[target]];
+    // Controls and force outputs have their own arrays since MuJoCo 3.11 (an actuator may have
+    // several of each); gear is per force output, the control range per control.
+    const ctrl = m.actuator_ctrladr[a], out = m.actuator_outadr[a], outs = m.actuator_outnum[a];
+    // The moment rows (one per force output) at qpos0, sparse over the dofs.
+    const rows = [];
+    for (let k = out; k < out + outs; ++k) {
+      const row = [];
+      for (let n = 0, adr = d.moment_rowadr[k]; n < d.moment_rownnz[k]; ++n)
+        row.push([d.moment_colind[adr + n], d.actuator_moment[adr + n]]);
+      rows.push(row);
+    }
+    // Up to 3.14: Σ dof_M0 / moment² over the first output's dofs. From 3.15: the
+    // operational-space inertia (J M⁻¹ Jᵀ)⁻¹ at qpos0, its diagonal averaged over the outputs.
+    let byM0 = 0;
+    for (const [dof, moment] of rows[0] ?? []) if (moment * moment > 1e-15) byM0 += m.dof_M0[dof] / (moment * moment);
+    const A = rows.map((ri) => rows.map((rj) => {
+      let sum = 0;
+      for (const [p, vp] of ri) for (const [q, vq] of rj) sum += vp * Minv[p * nv + q] * vq;
+      return sum;
+    }));
+    const lambda = outs > 0 ? invert(A.flat(), outs) : null;
+    let operational = null;
+    if (lambda && lambda.every(Number.isFinite)) {
+      operational = 0;
+      for (let k = 0; k < outs; ++k) operational += lambda[k * outs + k] / outs;
+    }
+    const zeta = dampratios.length === m.nactuator ? dampratios[a] : null;
+    const osExcluded = treeTainted.has(jointTrn ? m.body_rootid[m.jnt_bodyid[target]] : -1) || Minv === null;
     actuators.push({
       index: a,
       name: name(O.mjOBJ_ACTUATOR, a),
       transmission: trnNames[trn] ?? String(trn),
       joint: jointTrn ? target : null,
-      gear: m.actuator_gear[6 * a],
+      gear: m.actuator_gear[6 * out],
       gaintype: m.actuator_gaintype[a],
       biastype: m.actuator_biastype[a],
       gainprm: prm(m.actuator_gainprm, 10),
       biasprm: kvExcluded ? null : prm(m.actuator_biasprm, 10),
-      forcelimited: m.actuator_forcelimited[a] === 1,
+      forcelimited: flag('ACTUATOR', a, 'actuator_forcelimited'),
       forcerange: [m.actuator_forcerange[2 * a], m.actuator_forcerange[2 * a + 1]],
-      ctrllimited: m.actuator_ctrllimited[a] === 1,
-      ctrlrange: [m.actuator_ctrlrange[2 * a], m.actuator_ctrlrange[2 * a + 1]],
+      ctrllimited: flag('ACTUATOR', a, 'actuator_ctrllimited'),
+      ctrlrange: [m.actuator_ctrlrange[2 * ctrl], m.actuator_ctrlrange[2 * ctrl + 1]],
       kv_excluded: kvExcluded ? 'the joint moves a body that takes its mass from a stand-in mesh' : null,
+      reflected_inertia_m0: kvExcluded ? null : byM0,
+      reflected_inertia_operational: osExcluded ? null : operational,
+      // MuJoCo 3.15's kv for the same damping ratio: 2·ζ·√(kp·(J M⁻¹ Jᵀ)⁻¹).
+      dampratio: zeta,
+      kv_operational: zeta !== null && !osExcluded && operational !== null ? 2 * zeta * Math.sqrt(m.actuator_gainprm[10 * a] * operational) : null,
     });
   }
   const equalities = [];
@@ -269,7 +365,7 @@ function compile(modelPath) {
       index: e,
       joint1: m.eq_obj1id[e],
       joint2: m.eq_obj2id[e],  // -1: none
-      active: m.eq_active0[e] === 1,
+      active: flag('EQUALITY', e, 'eq_active0'),
       polycoef: Array.from(m.eq_data.slice(11 * e, 11 * e + 5)),
     });
   }

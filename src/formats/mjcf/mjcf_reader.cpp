@@ -31,7 +31,8 @@ Attr own(const XMLElement* el, const char* name) { return Attr{el, el->Attribute
 class Reader {
  public:
   Reader(std::shared_ptr<const SourceFile> file, const FileSystem& files, const ReadOptions& options)
-      : sources_(std::move(file), files, options), values_(sources_, result_.diagnostics) {}
+      : sources_(std::move(file), files, options), values_(sources_, result_.diagnostics),
+        dampratio_rule_(options.dampratio_rule) {}
 
   ReadResult run() {
     result_.asset.format = SourceFormat::Mjcf;
@@ -105,7 +106,7 @@ class Reader {
     note_coupled_loads(couplings, result_.asset);
     result_.asset.index_names();  // after the equalities: they make the mimics
     // Once the whole tree is known: MuJoCo derives kv from dampratio and the inertia at qpos0.
-    derive_dampratio_damping(damp_ratios, values_, result_.asset);
+    derive_dampratio_damping(damp_ratios, dampratio_rule_, values_, result_.asset);
     add_dampers(dampers, result_.asset);
     result_.asset.inherited_literals = values_.inherited_literals();
     // Equalities are read after the actuators; report in document order all the same.
@@ -543,6 +544,7 @@ class Reader {
   Compiler compiler_;
   Defaults defaults_;
   MeshAssets meshes_;
+  physics::DampRatioRule dampratio_rule_;
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "engine/file_system.h"
 #include "formats/xml/xml_document.h"
 #include "model/source.h"
+#include "physics/dampratio.h"
 
 namespace assetlint::mjcf {
 
@@ -21,6 +22,8 @@ struct ReadOptions {
   // Included files outside this directory tree are not read. Empty: the model's directory.
   std::string root_dir;
   bool allow_outside_root = false;
+  // How MuJoCo derives kv from dampratio: the release the model is judged for ([mujoco] version).
+  physics::DampRatioRule dampratio_rule = physics::DampRatioRule::OperationalSpace;
 };
 
 class MjcfSources {
