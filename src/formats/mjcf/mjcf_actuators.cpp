@@ -170,8 +170,13 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   if (p.gear.attr && std::abs(p.gear.value) != 1.0 && p.gear.value != 0.0)
     joint->transmission = Transmission{std::abs(p.gear.value), values.token_span(p.gear.attr, "gear", 0)};
   if (tag != "position" && tag != "general" && tag != "motor" && tag != "velocity") {
-    values.unsupported(values.element_span(el), fmt::format("<{}> actuators are not modelled ({})", tag, label))
-        .note(fmt::format("The joint '{}' counts as undriven by it.", joint_name));
+    // <pid> and the redesigned <dcmotor> (MuJoCo 3.12) carry controller state asset-lint does not step.
+    const bool newer = tag == "pid" || tag == "dcmotor";
+    values.unsupported(values.element_span(el), fmt::format("{} is not judged: asset-lint does not model <{}> actuators{}",
+                                                            label, tag, newer ? " (MuJoCo 3.12 and later)" : ""))
+        .note(fmt::format("No rule judges what it does to joint '{}' (its gains, damping or force bound); the joint "
+                          "counts as actuated.",
+                          joint_name));
     return;
   }
   if (!is_single_dof(joint->type)) return;
