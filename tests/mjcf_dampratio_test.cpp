@@ -10,6 +10,7 @@
 
 #include "engine/file_system.h"
 #include "formats/mjcf/mjcf_reader.h"
+#include "physics/dampratio.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -21,7 +22,7 @@ using physics::DampRatioRule;
 
 mjcf::ReadOptions under(DampRatioRule rule) {
   mjcf::ReadOptions options;
-  options.dampratio_rule = rule;
+  options.mujoco = rule == DampRatioRule::OperationalSpace ? MujocoVersion{3, 15} : MujocoVersion{3, 14};
   return options;
 }
 

@@ -29,6 +29,7 @@
 
 #include "engine/file_system.h"
 #include "formats/mjcf/mjcf_reader.h"
+#include "physics/dampratio.h"
 #include "engine/settings.h"
 #include "physics/articulation.h"
 #include "physics/joint_space_matrix.h"
@@ -125,7 +126,7 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
   // oracle's own mass matrix and actuator moments, (J·M⁻¹·Jᵀ)⁻¹ at qpos0.
   const auto read_as = [&](physics::DampRatioRule rule) {
     mjcf::ReadOptions options;
-    options.dampratio_rule = rule;
+    options.mujoco = rule == physics::DampRatioRule::OperationalSpace ? MujocoVersion{3, 15} : MujocoVersion{3, 14};
     return mjcf::read_mjcf(std::make_shared<const SourceFile>(path.string(), read_file(path)), disk, options);
   };
   const ReadResult read = read_as(physics::DampRatioRule::JointSpaceDiagonal);
@@ -180,6 +181,8 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
     }
     const auto& dof = mj["dofs"][0];
     if (type == "free" || type == "ball") {
+      // Their armature enters the joint-space matrix MuJoCo 3.15 derives dampratio's kv from.
+      c.value("armature (ball, free)", element, dof["armature"], value_of(joint.armature));
       c.skip(kMultiDof, element);
       continue;
     }

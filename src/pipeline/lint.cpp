@@ -53,7 +53,7 @@ ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const So
     case FileKind::Mjcf:
       return mjcf::read_mjcf(std::move(file), files,
                              mjcf::ReadOptions{config::checked_root(path, settings), settings.allow_outside_root,
-                                               physics::dampratio_rule(settings.mujoco.parsed())});
+                                               settings.mujoco.parsed()});
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files, compose_options(path, settings));
     case FileKind::Xacro: return xacro::read_xacro(std::move(file), files, xacro_options(path, settings));

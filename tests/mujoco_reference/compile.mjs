@@ -115,8 +115,8 @@ function describe(err) {
   return String(err?.message ?? err).replace(/\s+/g, ' ').trim();
 }
 
-// The inverse of a symmetric positive definite n×n matrix (row-major), by Cholesky; null when
-// it is not positive definite.
+// The inverse of a small symmetric positive definite n×n matrix (row-major), by Cholesky; null
+// when it is not positive definite.
 function invert(a, n) {
   const L = new Float64Array(n * n);
   for (let j = 0; j < n; ++j) {
@@ -289,13 +289,16 @@ function compile(modelPath) {
       inertia_diagonalised: rounded[body],
     });
   }
-  // The joint-space mass matrix M at qpos0 (dense) and its inverse, for the inertia an
-  // actuator reflects: a kinematic tree that moves a stand-in body has none.
+  // M⁻¹·v by MuJoCo's own factorisation of the joint-space mass matrix at qpos0 (mj_forward
+  // has factored it); a kinematic tree that moves a stand-in body reflects no known inertia.
   const nv = m.nv;
-  const full = new mj.DoubleBuffer(nv * nv);
-  mj.mj_fullM(m, d, full);
-  const Minv = invert(Array.from(full.GetView()), nv);
-  full.delete();
+  const solveM = (v) => {
+    const x = new mj.DoubleBuffer(nv);
+    mj.mj_solveM(m, d, x, v);
+    const out = Array.from(x.GetView());
+    x.delete();
+    return out;
+  };
   const treeTainted = new Set();
   for (let b = 1; b < m.nbody; ++b)
     if (guessed.length === m.nbody && guessed[b] && m.body_weldid[b] !== 0) treeTainted.add(m.body_rootid[b]);
@@ -323,19 +326,24 @@ function compile(modelPath) {
     // operational-space inertia (J M⁻¹ Jᵀ)⁻¹ at qpos0, its diagonal averaged over the outputs.
     let byM0 = 0;
     for (const [dof, moment] of rows[0] ?? []) if (moment * moment > 1e-15) byM0 += m.dof_M0[dof] / (moment * moment);
-    const A = rows.map((ri) => rows.map((rj) => {
-      let sum = 0;
-      for (const [p, vp] of ri) for (const [q, vq] of rj) sum += vp * Minv[p * nv + q] * vq;
-      return sum;
-    }));
-    const lambda = outs > 0 ? invert(A.flat(), outs) : null;
-    let operational = null;
-    if (lambda && lambda.every(Number.isFinite)) {
-      operational = 0;
-      for (let k = 0; k < outs; ++k) operational += lambda[k * outs + k] / outs;
-    }
     const zeta = dampratios.length === m.nactuator ? dampratios[a] : null;
-    const osExcluded = treeTainted.has(jointTrn ? m.body_rootid[m.jnt_bodyid[target]] : -1) || Minv === null;
+    // Only for a damping ratio: J·M⁻¹·Jᵀ over the outputs, then its inverse.
+    let operational = null;
+    if (zeta !== null && outs > 0) {
+      const dense = (row) => {
+        const v = new Array(nv).fill(0);
+        for (const [dof, moment] of row) v[dof] = moment;
+        return v;
+      };
+      const solved = rows.map((row) => solveM(dense(row)));
+      const A = rows.map((ri) => solved.map((xj) => ri.reduce((sum, [dof, moment]) => sum + moment * xj[dof], 0)));
+      const lambda = invert(A.flat(), outs);
+      if (lambda && lambda.every(Number.isFinite)) {
+        operational = 0;
+        for (let k = 0; k < outs; ++k) operational += lambda[k * outs + k] / outs;
+      }
+    }
+    const osExcluded = treeTainted.has(jointTrn ? m.body_rootid[m.jnt_bodyid[target]] : -1);
     actuators.push({
       index: a,
       name: name(O.mjOBJ_ACTUATOR, a),

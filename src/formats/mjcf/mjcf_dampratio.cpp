@@ -64,7 +64,7 @@ void derive_dampratio_damping(const std::vector<DampRatio>& requests, DampRatioR
       drive.damping_unknown = fmt::format("kv from dampratio {} needs {} of '{}' ({}), unknown: {}", format_number(r.ratio),
                                           symbol(rule), joint.name.text, physics::dampratio_rule_versions(rule), why);
       values.unsupported(r.span, fmt::format("{}: damping unknown (dampratio needs the inertia at the reference pose)", r.label))
-          .note(fmt::format("{} compiles kv = 2·ζ·√(kp·{}/g²); {} of '{}' is unknown: {}.", physics::dampratio_rule_versions(rule),
+          .note(fmt::format("{} compile kv = 2·ζ·√(kp·{}/g²); {} of '{}' is unknown: {}.", physics::dampratio_rule_versions(rule),
                             symbol(rule), symbol(rule), joint.name.text, why))
           .note("The verdicts that need the drive's damping (damping ratio, natural frequency, armature) are skipped.");
       continue;

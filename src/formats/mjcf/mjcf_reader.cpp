@@ -32,7 +32,7 @@ class Reader {
  public:
   Reader(std::shared_ptr<const SourceFile> file, const FileSystem& files, const ReadOptions& options)
       : sources_(std::move(file), files, options), values_(sources_, result_.diagnostics),
-        dampratio_rule_(options.dampratio_rule) {}
+        mujoco_(options.mujoco), dampratio_rule_(physics::dampratio_rule(options.mujoco)) {}
 
   ReadResult run() {
     result_.asset.format = SourceFormat::Mjcf;
@@ -66,6 +66,7 @@ class Reader {
     for (const XMLElement* el : sections)
       if (std::string_view(el->Name()) == "worldbody") read_bodies(el, "", "main");
     if (compiler_.settotalmass > 0) scale_to_total_mass(compiler_.settotalmass);
+    report_removed_attributes(root);
     const Couplings couplings = read_couplings(sources_, defaults_, compiler_, sections, values_, result_.asset);
     const FixedTendons& tendons = couplings.fixed;
     std::vector<const XMLElement*> joint_equalities;
@@ -398,13 +399,15 @@ class Reader {
     const auto cls = class_of(el, childclass);
     if (!cls) return 1;
     const auto& defs = defaults_.elements(*cls, "joint");
-    auto lookup = [&](const char* name) { return Defaults::lookup(el, defs, name); };
+    const bool free = std::string_view(el->Name()) == "freejoint";
+    // A <freejoint> takes nothing from the default classes (MuJoCo compiles it with no armature
+    // or damping whatever <default><joint> says).
+    auto lookup = [&](const char* name) { return free ? own(el, name) : Defaults::lookup(el, defs, name); };
     Joint joint;
     const char* name = el->Attribute("name");
     joint.span = values_.element_span(el);
     joint.name = Name{name ? name : fmt::format("(unnamed joint at line {})", joint.span.line),
                       name ? values_.value_span(own(el, "name"), "name") : joint.span};
-    const bool free = std::string_view(el->Name()) == "freejoint";
     const Attr type_attr = free ? Attr{} : lookup("type");
     const std::string_view type_text = type_attr ? trim(type_attr.value) : (free ? "free" : "hinge");
     auto type = joint_type(type_text);
@@ -544,7 +547,24 @@ class Reader {
   Compiler compiler_;
   Defaults defaults_;
   MeshAssets meshes_;
+  MujocoVersion mujoco_;
   physics::DampRatioRule dampratio_rule_;
+
+  // Attributes the release judged for no longer accepts, anywhere in the model: MuJoCo 3.5
+  // renamed <camera orthographic="true|false"> to projection="orthographic|perspective" and
+  // refuses the old name.
+  void report_removed_attributes(const XMLElement* parent) {
+    for (const XMLElement* el : sources_.children(parent)) {
+      if (std::string_view(el->Name()) == "camera" && el->Attribute("orthographic") &&
+          std::make_pair(mujoco_.major, mujoco_.minor) >= std::make_pair(3, 5))
+        values_.error(values_.value_span(own(el, "orthographic"), "orthographic"),
+                      "<camera orthographic>: MuJoCo 3.5 and later refuse the model (the attribute is now projection)")
+            .note("Write projection=\"orthographic\" for orthographic=\"true\", projection=\"perspective\" for \"false\".")
+            .note(fmt::format("Judged for MuJoCo {}.{} ([mujoco] version); MuJoCo 3.3 and 3.4 accept it.", mujoco_.major,
+                              mujoco_.minor));
+      report_removed_attributes(el);
+    }
+  }
 };
 
 }  // namespace

@@ -14,7 +14,7 @@
 #include "engine/file_system.h"
 #include "formats/xml/xml_document.h"
 #include "model/source.h"
-#include "physics/dampratio.h"
+#include "engine/settings.h"
 
 namespace assetlint::mjcf {
 
@@ -22,8 +22,9 @@ struct ReadOptions {
   // Included files outside this directory tree are not read. Empty: the model's directory.
   std::string root_dir;
   bool allow_outside_root = false;
-  // How MuJoCo derives kv from dampratio: the release the model is judged for ([mujoco] version).
-  physics::DampRatioRule dampratio_rule = physics::DampRatioRule::OperationalSpace;
+  // The MuJoCo release the model is judged for ([mujoco] version): how dampratio derives kv,
+  // which attributes it still accepts.
+  MujocoVersion mujoco;
 };
 
 class MjcfSources {
