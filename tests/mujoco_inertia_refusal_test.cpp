@@ -1,7 +1,8 @@
 // inertia-invalid says "MuJoCo's compiler refuses the file" where MuJoCo's compiler does: the
 // refusal rules of src/physics/mujoco_inertia.h on their own, and the rule's verdicts held to
-// MuJoCo itself (tests/mujoco_reference/compile.mjs, MuJoCo 3.3 in WASM) on every URDF fixture of
-// the rule. Skipped with a message when `node` or mujoco-js is absent; a failure under CI=true.
+// MuJoCo itself (tests/mujoco_reference/compile.mjs, MuJoCo 3.14 in WASM, npm @mujoco/mujoco; it
+// refuses the same fixtures at the same bodies as 3.3 did) on every URDF fixture of the rule.
+// Skipped with a message when `node` or @mujoco/mujoco is absent; a failure under CI=true.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -79,12 +80,12 @@ TEST_CASE("MuJoCo's inertia refusals: eigenvalues of a full tensor, A + B >= C e
 
 TEST_CASE("inertia-invalid names MuJoCo's refusal of a URDF exactly where MuJoCo's compiler refuses it",
           "[inertia][mujoco][oracle]") {
-  const auto package = test::source_dir() / "tools" / "node_modules" / "mujoco-js";
+  const auto package = test::source_dir() / "tools" / "node_modules" / "@mujoco" / "mujoco";
   std::string missing;
   if (!test::on_path("node")) missing = "node not found on PATH";
-  else if (!fs::exists(package / "dist" / "mujoco_wasm.js"))
-    missing = "mujoco-js is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
-  if (test::skip_without_reference("MuJoCo (mujoco-js)", missing)) return;
+  else if (!fs::exists(package / "mujoco.js"))
+    missing = "@mujoco/mujoco is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
+  if (test::skip_without_reference("MuJoCo (@mujoco/mujoco)", missing)) return;
 
   std::vector<fs::path> models;
   for (const auto& entry : fs::directory_iterator(test::fixtures_dir() / "rules" / "inertia-invalid"))
