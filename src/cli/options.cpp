@@ -66,10 +66,10 @@ void add_options(CLI::App& app, Options& o) {
                  "Solver position iterations, when the asset authors none")
       ->check(CLI::Range(1u, 255u));
   app.add_option("--root", o.root,
-                 "The checked tree whose files USD composition may read (default: the file's git work tree, else "
+                 "The checked tree, the only files a check may read (default: the file's git work tree, else "
                  "the directory of its asset-lint.toml, else the directory named or the working directory)")
       ->check(CLI::ExistingDirectory);
-  app.add_flag("--allow-outside-root", o.allow_outside_root, "Let USD composition read layers outside the checked tree");
+  app.add_flag("--allow-outside-root", o.allow_outside_root, "Let references (includes, layers, meshes, links) read files outside the checked tree");
   app.add_option("--xacro-arg", o.xacro_args, "A xacro argument's value, name:=value (repeatable; wins over [xacro] args)")
       ->check([](const std::string& s) { return s.find(":=") == std::string::npos ? "expected name:=value" : std::string(); });
   app.add_option("--variant", o.variants,

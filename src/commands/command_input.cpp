@@ -40,10 +40,10 @@ std::optional<double> positive_flag(const std::string& flag, const std::string& 
 
 void add_scope_options(CLI::App& app, CompositionScope& scope) {
   app.add_option("--root", scope.root,
-                 "The tree whose files USD composition may read (default: the file's git work tree, else the "
-                 "directory of its asset-lint.toml)")
+                 "The checked tree: the only files a reference may make asset-lint read (default: the file's git work "
+                 "tree, else the directory of its asset-lint.toml)")
       ->check(CLI::ExistingDirectory);
-  app.add_flag("--allow-outside-root", scope.allow_outside_root, "Let USD composition read layers outside that tree");
+  app.add_flag("--allow-outside-root", scope.allow_outside_root, "Let references (includes, layers, meshes, links) read files outside that tree");
   app.add_option("--variant", scope.variants,
                  "Select this variant in every USD variant set of that name, SET=NAME (repeatable; wins over "
                  "[usd] variants and the stage's own selection)")

@@ -9,6 +9,7 @@
 #include "commands/command_input.h"
 #include "commands/exit_status.h"
 #include "config/project_root.h"
+#include "engine/read_policy.h"
 #include "config/resolver.h"
 #include "engine/file_system.h"
 #include "formats/xacro/xacro_reader.h"
@@ -33,6 +34,7 @@ int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ost
   config::CommandLineOverrides overrides;
   overrides.trees.push_back(std::filesystem::current_path(ec).string());
   overrides.root = scope.root;
+  overrides.allow_outside_root = scope.allow_outside_root;
   for (const auto& arg : xacro_args) {
     const auto at = arg.find(":=");
     overrides.xacro_args.emplace_back(arg.substr(0, at), arg.substr(at + 2));
@@ -44,7 +46,8 @@ int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ost
   }
   const Settings& settings = resolver.for_file(path);
   std::string error;
-  std::optional<std::string> text = disk().read(path, error);
+  const ConfinedFileSystem files(disk(), config::read_policy(path, settings));
+  std::optional<std::string> text = files.read(path, error);
   if (!text) {
     err << fmt::format("asset-lint expand: error: cannot read '{}': {}\n", path, error);
     return kExitError;
@@ -53,7 +56,7 @@ int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ost
   options.root = config::checked_root(path, settings);
   for (const auto& [name, value] : settings.xacro.args) options.arguments[name] = xacro::ArgumentValue{value.value, value.origin, {}};
   const xacro::ExpandedText expanded =
-      xacro::expand_to_text(std::make_shared<const SourceFile>(path, std::move(*text)), disk(), options);
+      xacro::expand_to_text(std::make_shared<const SourceFile>(path, std::move(*text)), files, options);
   if (!expanded.text) {
     const xacro::ExpandError& e = *expanded.error;
     const auto path_of = [&](const Span& span) {

@@ -99,10 +99,12 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   std::vector<std::string> link_names;
   for (const Link& link : asset.links) link_names.push_back(link.name.text);
   const std::string root = config::checked_root(path, settings);
+  const ReadPolicy reads = config::read_policy(path, settings);
   for (const std::string& filename : verify::collision_meshes(asset, link_names)) {
     const auto file = mesh::resolve_mesh(filename, plan.asset_dir.empty() ? "." : plan.asset_dir,
                                          root.empty() ? (plan.asset_dir.empty() ? "." : plan.asset_dir) : root, error);
     if (!file) return fail(fmt::format("{}: {}", path, error));
+    if (auto refused = reads.refusal(*file)) return fail(fmt::format("{}: mesh '{}' {}", path, filename, *refused));
     auto points = mesh::read_points(*file, error);
     if (!points) return fail(fmt::format("{}: {}", path, error));
     plan.meshes[filename] = std::move(*points);

@@ -1,5 +1,7 @@
 #include "config/project_root.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 
 #include "config/config.h"
@@ -51,6 +53,28 @@ std::string checked_root(const std::string& path, const Settings& settings) {
   if (fs::path config = discover(file); !config.empty())
     return without_trailing_separator(fs::absolute(config, ec).parent_path());
   return deepest_named_tree(file, settings.trees).string();
+}
+
+ReadPolicy read_policy(const std::string& path, const Settings& settings) {
+  if (settings.allow_outside_root) return ReadPolicy::unconfined();
+  std::vector<std::string> roots;
+  std::string tree = checked_root(path, settings);
+  if (tree.empty()) {
+    std::error_code ec;
+    tree = fs::absolute(path, ec).lexically_normal().parent_path().string();
+  }
+  roots.push_back(tree);
+  // The packages a ROS workspace names are read as `$(find pkg)` and `package://` resolve
+  // them; the variable is the runner's, not the checked files'.
+  if (const char* packages = std::getenv("ROS_PACKAGE_PATH")) {
+    const std::string entries(packages);
+    for (std::size_t at = 0; at <= entries.size();) {
+      const std::size_t end = std::min(entries.find(':', at), entries.size());
+      if (end > at) roots.push_back(entries.substr(at, end - at));
+      at = end + 1;
+    }
+  }
+  return ReadPolicy::confined_to(roots);
 }
 
 }  // namespace assetlint::config

@@ -8,10 +8,16 @@
 // the file. Empty when none applies: the file's own directory.
 #include <string>
 
+#include "engine/read_policy.h"
+
 #include "engine/settings.h"
 
 namespace assetlint::config {
 
 std::string checked_root(const std::string& file, const Settings& settings);
+
+// What a check of `file` may read: the checked tree (the directory of `file` when no tree holds
+// it) and the package directories ROS_PACKAGE_PATH names; anything with --allow-outside-root.
+ReadPolicy read_policy(const std::string& file, const Settings& settings);
 
 }  // namespace assetlint::config

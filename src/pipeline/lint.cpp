@@ -12,6 +12,7 @@
 
 #include "config/drive_overrides.h"
 #include "config/project_root.h"
+#include "engine/read_policy.h"
 #include "engine/rule.h"
 #include "fix/trailing_comments.h"
 #include "formats/file_kind.h"
@@ -126,7 +127,8 @@ std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std:
 
 }  // namespace
 
-FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& files) {
+FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& unconfined) {
+  const ConfinedFileSystem files(unconfined, config::read_policy(path, settings));
   FileReport report;
   report.path = path;
   FileKind kind;
@@ -179,19 +181,20 @@ std::optional<ReadResult> read_asset(const std::string& path, const Settings& se
   return std::move(loaded.read);
 }
 
-FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& files) {
+FileReport lint_file(const std::string& path, const Settings& settings, const FileSystem& unconfined) {
   std::string error;
-  std::optional<std::string> text = files.read(path, error);
+  std::optional<std::string> text = ConfinedFileSystem(unconfined, config::read_policy(path, settings)).read(path, error);
   if (!text) {
     FileReport report;
     report.path = path;
     report.error = fmt::format("cannot read '{}': {}", path, error);
     return report;
   }
-  return lint_text(path, std::move(*text), settings, files);
+  return lint_text(path, std::move(*text), settings, unconfined);
 }
 
-LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files) {
+LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& unconfined) {
+  const ConfinedFileSystem files(unconfined, config::read_policy(path, settings));
   LoadedAsset loaded;
   std::string error;
   std::optional<std::string> text = files.read(path, error);
@@ -220,7 +223,8 @@ LoadedAsset load_asset(const std::string& path, const Settings& settings, const 
   return loaded;
 }
 
-std::optional<VariantRun> plan_variants(const std::string& path, const Settings& settings, const FileSystem& files) {
+std::optional<VariantRun> plan_variants(const std::string& path, const Settings& settings, const FileSystem& unconfined) {
+  const ConfinedFileSystem files(unconfined, config::read_policy(path, settings));
   std::string error;
   std::optional<std::string> text = files.read(path, error);
   FileKind kind;
