@@ -58,12 +58,14 @@ std::string checked_root(const std::string& path, const Settings& settings) {
 ReadPolicy read_policy(const std::string& path, const Settings& settings) {
   if (settings.allow_outside_root) return ReadPolicy::unconfined();
   std::vector<std::string> roots;
-  std::string tree = checked_root(path, settings);
-  if (tree.empty()) {
-    std::error_code ec;
-    tree = fs::absolute(path, ec).lexically_normal().parent_path().string();
-  }
-  roots.push_back(tree);
+  std::error_code ec;
+  const fs::path directory = fs::absolute(path, ec).lexically_normal().parent_path();
+  const std::string tree = checked_root(path, settings);
+  roots.push_back(tree.empty() ? directory.string() : tree);
+  // The file named is the user's choice, wherever --root puts the tree (an expansion written to
+  // /tmp, checked with --root at its package): its own directory is read too, unless a symbolic
+  // link on the way makes that directory somewhere else.
+  if (fs::weakly_canonical(directory, ec) == directory) roots.push_back(directory.string());
   // The packages a ROS workspace names are read as `$(find pkg)` and `package://` resolve
   // them; the variable is the runner's, not the checked files'.
   if (const char* packages = std::getenv("ROS_PACKAGE_PATH")) {
