@@ -43,6 +43,18 @@ std::string without_trailing_separator(fs::path path) {
   return text;
 }
 
+// A file no tree holds (named by path from elsewhere, outside any git work tree): the
+// directory that holds its ROS package, so that `$(find pkg)` reaches the package's siblings as
+// in a workspace's src/; the file's own directory when it is in no package.
+fs::path outside_any_tree(const fs::path& directory) {
+  std::error_code ec;
+  for (fs::path dir = directory; !dir.empty(); dir = dir.parent_path()) {
+    if (fs::exists(dir / "package.xml", ec)) return dir.parent_path();
+    if (dir == dir.root_path()) break;
+  }
+  return directory;
+}
+
 }  // namespace
 
 std::string checked_root(const std::string& path, const Settings& settings) {
@@ -61,7 +73,7 @@ ReadPolicy read_policy(const std::string& path, const Settings& settings) {
   std::error_code ec;
   const fs::path directory = fs::absolute(path, ec).lexically_normal().parent_path();
   const std::string tree = checked_root(path, settings);
-  roots.push_back(tree.empty() ? directory.string() : tree);
+  roots.push_back(tree.empty() ? outside_any_tree(directory).string() : tree);
   // The file named is the user's choice, wherever --root puts the tree (an expansion written to
   // /tmp, checked with --root at its package): its own directory is read too, unless a symbolic
   // link on the way makes that directory somewhere else.
