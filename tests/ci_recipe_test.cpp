@@ -137,7 +137,7 @@ class AssetRepository {
   const std::filesystem::path& root() const { return root_; }
   // Runs `command` in the repository with the built asset-lint first on PATH.
   int run(const std::string& command) {
-    const std::string env = "PATH=" + shell_quote(std::filesystem::path(ASSET_LINT_BINARY).parent_path().string()) +
+    const std::string env = "PATH=" + shell_quote(assetlint::test::asset_lint_binary().parent_path().string()) +
                             ":\"$PATH\" NO_COLOR=1 PRE_COMMIT_COLOR=never PRE_COMMIT_HOME=" +
                             shell_quote((dir_.path() / "pre-commit-cache").string()) + " ";
     return run_shell("cd " + shell_quote(root_.string()) + " && " + env + command, dir_.path() / "log", output);

@@ -176,7 +176,7 @@ TEST_CASE("fix: permission bits are respected (as an unprivileged user)", "[fix]
   const fs::path out = dir.path() / "out", err = dir.path() / "err";
   const std::string command = "cd " + shell_quote(work.string()) +
                               " && setpriv --reuid=nobody --regid=nogroup --clear-groups " +
-                              shell_quote(ASSET_LINT_BINARY) + " --fix --unsafe-fixes robot.urdf >" +
+                              shell_quote(assetlint::test::asset_lint_binary().string()) + " --fix --unsafe-fixes robot.urdf >" +
                               shell_quote(out.string()) + " 2>" + shell_quote(err.string());
   const int status = std::system(command.c_str());
   const std::string err_text = test::read_file(err);
@@ -244,7 +244,7 @@ TEST_CASE("fix: a full disk leaves the file intact with exit 2", "[fix]") {
       shell_quote(fixture.string()) + " " + shell_quote((mount / "robot.urdf").string()) +
       "; dd if=/dev/zero of=" + shell_quote((mount / "fill").string()) +
       " bs=1024 count=64 2>/dev/null || true; cd " + shell_quote(mount.string()) + "; set +e; " +
-      shell_quote(ASSET_LINT_BINARY) + " --fix --unsafe-fixes robot.urdf >" + shell_quote(out.string()) + " 2>" +
+      shell_quote(assetlint::test::asset_lint_binary().string()) + " --fix --unsafe-fixes robot.urdf >" + shell_quote(out.string()) + " 2>" +
       shell_quote(err.string()) + "; echo $? >" + shell_quote(rc.string()) + "; cmp -s robot.urdf " +
       shell_quote(fixture.string()) + " && echo intact >>" + shell_quote(rc.string()) + "; ls -A | wc -l >>" +
       shell_quote(rc.string());

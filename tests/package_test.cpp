@@ -16,7 +16,7 @@ using assetlint::test::shell_quote;
 using assetlint::test::TempDir;
 
 TEST_CASE("package: cpack -G DEB makes a package with the binary, man page, docs and hooks", "[package]") {
-  const auto build = std::filesystem::path(ASSET_LINT_BINARY).parent_path();
+  const auto build = assetlint::test::asset_lint_binary().parent_path();
   if (!on_path("cpack") || !on_path("dpkg-deb") || !std::filesystem::exists(build / "CPackConfig.cmake")) {
     WARN("cpack, dpkg-deb (dpkg) or the build's CPackConfig.cmake missing; skipping the package test");
     return;

@@ -17,7 +17,7 @@ using assetlint::test::write_file;
 
 namespace {
 
-std::filesystem::path binary_dir() { return std::filesystem::path(ASSET_LINT_BINARY).parent_path(); }
+std::filesystem::path binary_dir() { return assetlint::test::asset_lint_binary().parent_path(); }
 
 }  // namespace
 

@@ -58,7 +58,7 @@ CommandResult run_cli_with_input(const std::vector<std::string>& args, const std
   TempDir capture;
   const auto out_path = capture.path() / "out", err_path = capture.path() / "err", in_path = capture.path() / "in";
   write_file(in_path, input);
-  std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_quote(ASSET_LINT_BINARY);
+  std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_quote(assetlint::test::asset_lint_binary().string());
   for (const auto& arg : args) command += " " + shell_quote(arg);
   command += " >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string()) + " <" +
              shell_quote(in_path.string());

@@ -6,7 +6,10 @@
 
 namespace assetlint::test {
 
-inline std::filesystem::path source_dir() { return ASSET_LINT_SOURCE_DIR; }
+// The repository and the asset-lint binary under test (their paths are compiled into one file,
+// so every other test file compiles the same in every checkout).
+std::filesystem::path source_dir();
+std::filesystem::path asset_lint_binary();
 inline std::filesystem::path fixtures_dir() { return source_dir() / "fixtures"; }
 // The report-format fixtures (gripper.urdf, joints.usda and their goldens).
 inline std::filesystem::path report_dir() { return fixtures_dir() / "report"; }

@@ -1,4 +1,5 @@
 // Every real .usda file in the shared corpus and the reference schemas must parse.
+#include "test_support.h"
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -54,9 +55,9 @@ void check_all_parse(const fs::path& root) {
 }  // namespace
 
 TEST_CASE("usda corpus: every shared corpus file parses", "[usda][corpus]") {
-  check_all_parse(fs::path(ASSET_LINT_SOURCE_DIR "/../shared/corpus/usda"));
+  check_all_parse(assetlint::test::source_dir() / "../shared/corpus/usda");
 }
 
 TEST_CASE("usda corpus: every reference schema parses", "[usda][corpus]") {
-  check_all_parse(fs::path(ASSET_LINT_SOURCE_DIR "/../shared/reference/schemas"));
+  check_all_parse(assetlint::test::source_dir() / "../shared/reference/schemas");
 }

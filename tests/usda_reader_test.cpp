@@ -319,7 +319,7 @@ TEST_CASE("usd reader: lint_text dispatches .usda and reports parse errors", "[u
 
 // --- the real Robotiq 2F-85 layer stack ------------------------------------------------
 namespace {
-std::filesystem::path corpus_usda() { return std::filesystem::path(ASSET_LINT_SOURCE_DIR "/../shared/corpus/usda"); }
+std::filesystem::path corpus_usda() { return assetlint::test::source_dir() / "../shared/corpus/usda"; }
 }  // namespace
 
 TEST_CASE("usd reader: every corpus .usda composes and lints without crashing", "[usd][reader][corpus]") {

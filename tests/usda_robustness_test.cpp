@@ -1,5 +1,6 @@
 // Mutated inputs (truncations, byte flips, deleted brackets) must never crash, hang or
 // read outside the text, and every error must carry a span inside the text.
+#include "test_support.h"
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -135,7 +136,7 @@ TEST_CASE("usda robustness: mutated fixture never crashes", "[usda][robustness]"
 }
 
 TEST_CASE("usda robustness: mutated corpus files never crash", "[usda][robustness]") {
-  const fs::path root(ASSET_LINT_SOURCE_DIR "/../shared/corpus/usda");
+  const fs::path root = assetlint::test::source_dir() / "../shared/corpus/usda";
   if (!fs::is_directory(root)) {
     WARN("corpus directory not found, skipping: " << root.string());
     return;
