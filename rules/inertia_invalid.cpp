@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <unordered_map>
 
-#include "formats/urdf/urdf_reread.h"
 #include "model/topology.h"
 #include "physics/articulation.h"
 #include "physics/inertia.h"
@@ -104,7 +103,12 @@ class InertiaInvalid final : public Rule {
   // already bounded and balanced as the compiler does, whose eigenvalue check it cannot repeat
   // (it does not keep whether a tensor was written full or diagonal). USD: MuJoCo does not read it.
   static std::optional<physics::MujocoInertiaInput> mujoco_input(const Asset& asset) {
-    if (asset.format == SourceFormat::Urdf) return urdf::mujoco_inertia_input(asset);
+    if (asset.format == SourceFormat::Urdf) {
+      physics::MujocoInertiaInput input;
+      input.boundinertia = asset.urdf_mujoco_compiler.boundinertia;
+      input.balanceinertia = asset.urdf_mujoco_compiler.balanceinertia;
+      return input;
+    }
     if (asset.format == SourceFormat::Mjcf) return physics::MujocoInertiaInput{physics::MujocoInertiaInput::Form::Unknown};
     return std::nullopt;
   }
@@ -344,11 +348,11 @@ class InertiaInvalid final : public Rule {
     bool visual = false;
     bool any() const { return collision || visual; }
   };
-  static Shapes shapes_of(const Asset& asset, const RigidBody& body) {
+  static Shapes shapes_of(const RigidBody& body) {
     Shapes shapes;
     for (const Link* link : body.links) {
       shapes.collision = shapes.collision || !link->collisions.empty();
-      shapes.visual = shapes.visual || urdf::link_has_visual(asset, *link);
+      shapes.visual = shapes.visual || link->visual;
     }
     return shapes;
   }
@@ -390,7 +394,7 @@ class InertiaInvalid final : public Rule {
       const RigidBody& body = bodies[b];
       if (body.links.empty()) continue;  // undefined child: structure-undefined-link reports it
       // A link with a shape is a part, whatever carries the mass above it: never a virtual base.
-      const Shapes shapes = shapes_of(asset, body);
+      const Shapes shapes = shapes_of(body);
       const bool virtual_base = !shapes.any() && virtual_base_body(asset, tree, bodies, b);
       const Link& child = *body.links.front();
       const Link* first_inertial = nullptr;

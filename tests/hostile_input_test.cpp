@@ -12,6 +12,8 @@
 #include <variant>
 
 #include "engine/file_system.h"
+#include "engine/work_budget.h"
+#include "formats/xacro/expander.h"
 #include "formats/usdc/crate_usda.h"
 #include "pipeline/lint.h"
 #include "test_support.h"
@@ -241,6 +243,81 @@ usdc::CrateError crate_error(const std::string& bytes) {
 }
 
 }  // namespace
+
+TEST_CASE("hostile: a xacro macro that doubles without writing anything ends at the step limit or the time budget",
+          "[hostile][xacro]") {
+  test::TempDir dir;
+  // Each level calls the one below twice and writes nothing: the output limit never trips.
+  const std::string silent = R"xml(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="m" params="n">
+    <xacro:if value="${n > 0}"><xacro:m n="${n-1}"/><xacro:m n="${n-1}"/></xacro:if>
+  </xacro:macro>
+  <xacro:m n="40"/>
+  <link name="base"/>
+</robot>
+)xml";
+  const auto top = std::make_shared<const SourceFile>((dir.path() / "silent.xacro").string(), silent);
+
+  xacro::ExpandOptions few_steps;
+  few_steps.max_steps = 500;
+  const xacro::ExpandResult stepped = xacro::expand_xacro(top, disk(), few_steps);
+  REQUIRE(stepped.error);
+  CHECK(stepped.error->message.find("more than 500 elements and macro calls") != std::string::npos);
+
+  xacro::ExpandOptions short_budget;
+  short_budget.deadline = Deadline::after(0.05);
+  const xacro::ExpandResult timed = xacro::expand_xacro(top, disk(), short_budget);
+  REQUIRE(timed.error);
+  CHECK(timed.error->message == "the expansion ran out of the file's time budget of 0.05 s (--time-budget)");
+
+  // The CLI's option reaches the expansion, and the file is reported at the call.
+  test::write_file(dir.path() / "silent.xacro", silent);
+  const auto run = test::run_cli({"--time-budget", "0.2", "silent.xacro"}, dir.path());
+  CHECK(run.exit_code == 1);
+  CHECK(run.out.find("silent.xacro:3:") != std::string::npos);
+  CHECK(run.out.find("time budget of 0.2 s (--time-budget) [parse-error]") != std::string::npos);
+}
+
+TEST_CASE("hostile: a file whose rules outlast the time budget is reported as not checked", "[hostile]") {
+  test::TempDir dir;
+  test::write_file(dir.path() / "robot.urdf", kValidUrdf);
+  // A microsecond is gone before the first rule runs: the file is named, nothing of it is reported.
+  const auto stopped = test::run_cli({"--time-budget", "0.000001", "robot.urdf", "--output-format", "json"}, dir.path());
+  CHECK(stopped.exit_code == 2);
+  CHECK(stopped.err.find("'robot.urdf': checking stopped: the file's time budget of 1e-06 s (--time-budget) ran out "
+                         "before rule '") != std::string::npos);
+  CHECK(stopped.out.find("\"not_read\": 1") != std::string::npos);
+  // The default budget checks it.
+  CHECK(test::run_cli({"robot.urdf"}, dir.path()).exit_code == 0);
+  // 0 means no budget.
+  CHECK(test::run_cli({"--time-budget", "0", "robot.urdf"}, dir.path()).exit_code == 0);
+}
+
+TEST_CASE("hostile: a file that is not the format it claims is described, not quoted", "[hostile]") {
+  test::TempDir dir;
+  const std::string secret = "root:x:0:0:root:/root:/bin/bash\ntoken=3f9a77c1\n";
+  std::string binary = "\x7f" "ELF\x02\x01\x01";
+  binary += std::string("\0\0\0", 3) + secret;
+  test::write_file(dir.path() / "passwd.urdf", secret);
+  test::write_file(dir.path() / "program.urdf", binary);
+  test::write_file(dir.path() / "program.usda", binary);
+  test::write_file(dir.path() / "macro.xacro", secret);
+  for (const std::string format : {"text", "json", "sarif", "github", "gitlab", "junit"}) {
+    INFO(format);
+    const auto run = test::run_cli({"passwd.urdf", "program.urdf", "program.usda", "macro.xacro", "--output-format", format},
+                                   dir.path());
+    CHECK(run.exit_code == 1);
+    CHECK(run.out.find("root:x") == std::string::npos);
+    CHECK(run.out.find("3f9a77c1") == std::string::npos);
+    CHECK(run.out.find("not XML: the file holds text and no element") != std::string::npos);
+    CHECK(run.out.find("binary data, not XML: byte 0 is U+007F") != std::string::npos);
+    CHECK(run.out.find("binary data, not a USD layer: byte 0 is U+007F") != std::string::npos);
+  }
+  // With source excerpts, a line of binary data is not shown either.
+  const auto full = test::run_cli({"program.urdf", "program.usda", "--output-format", "full"}, dir.path());
+  CHECK(full.out.find("ELF") == std::string::npos);
+  CHECK(full.out.find("root:x") == std::string::npos);
+}
 
 TEST_CASE("hostile: a broken crate layer is an error naming its section, never a crash", "[hostile][usdc]") {
   const std::string good = crate_fixture();

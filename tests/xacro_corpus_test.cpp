@@ -62,7 +62,7 @@ void same_robot(const Asset& expanded, const Asset& generated) {
 void check_package(const fs::path& top, const fs::path& generated) {
   INFO(top.string());
   const auto file = std::make_shared<const SourceFile>(top.string(), test::read_file(top));
-  const ReadResult expanded = xacro::read_xacro(file, disk(), xacro::XacroOptions{{}, top.parent_path().string()});
+  const ReadResult expanded = xacro::read_xacro(file, disk(), xacro::XacroOptions{{}, top.parent_path().string(), Deadline{}});
   for (const auto& d : expanded.diagnostics) INFO(d.message);
   REQUIRE(expanded.usable);
   const ReadResult reference = urdf::read_urdf(std::make_shared<const SourceFile>(generated.string(), test::read_file(generated)));

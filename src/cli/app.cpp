@@ -30,6 +30,8 @@
 #include "pipeline/discovery.h"
 #include "report/settings_report.h"
 #include "util/spelling.h"
+#include "util/ros_package_path.h"
+#include "engine/work_budget.h"
 
 namespace assetlint::cli {
 namespace {
@@ -160,6 +162,8 @@ int run_check_command(const std::vector<std::string>& args, std::istream& in, st
     return kExitClean;
   }
   set_disk_limits(ReadLimits{options.max_file_mib << 20});
+  set_time_budget(options.time_budget_s);
+  add_package_paths(options.package_paths);
   std::ofstream report_file;
   if (!options.output_file.empty()) {
     report_file.open(options.output_file, std::ios::binary | std::ios::trunc);

@@ -70,6 +70,11 @@ void add_options(CLI::App& app, Options& o) {
                  "the directory of its asset-lint.toml, else the directory named or the working directory)")
       ->check(CLI::ExistingDirectory);
   app.add_flag("--allow-outside-root", o.allow_outside_root, "Let references (includes, layers, meshes, links) read files outside the checked tree");
+  app.add_option("--package-path", o.package_paths,
+                 "A directory of ROS packages that $(find pkg) and package:// resolve in, and that may be read "
+                 "(repeatable; after ROS_PACKAGE_PATH)")
+      ->check(CLI::ExistingDirectory)
+      ->allow_extra_args(false);
   app.add_option("--xacro-arg", o.xacro_args, "A xacro argument's value, name:=value (repeatable; wins over [xacro] args)")
       ->check([](const std::string& s) { return s.find(":=") == std::string::npos ? "expected name:=value" : std::string(); });
   app.add_option("--variant", o.variants,
@@ -80,6 +85,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--max-file-size", o.max_file_mib,
                  "Files and layers larger than this many MiB are not read (an error names them; default 512)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 20));
+  app.add_option("--time-budget", o.time_budget_s,
+                 "Stop checking a file after this many seconds and report it as not checked (default 60; 0: no limit)")
+      ->check(CLI::Range(0.0, 1e6));
   app.add_flag("--fix", o.fix, "Apply the safe fixes in place, then report what remains");
   app.add_flag("--unsafe-fixes", o.unsafe_fixes, "With --fix or --diff, also apply the unsafe fixes");
   app.add_flag("--diff", o.diff, "Print a unified diff of what --fix would change; write nothing");

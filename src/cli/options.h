@@ -8,6 +8,7 @@
 
 #include "config/resolver.h"
 #include "engine/file_system.h"
+#include "engine/work_budget.h"
 
 namespace assetlint::cli {
 
@@ -30,8 +31,10 @@ struct Options {
   std::string baseline, write_baseline;  // --baseline FILE, --write-baseline FILE
   bool allow_outside_root = false;
   std::vector<std::string> xacro_args;  // --xacro-arg name:=value
+  std::vector<std::string> package_paths;  // --package-path DIR
   std::vector<std::string> variants;    // --variant SET=NAME
   std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read
+  double time_budget_s = kDefaultTimeBudgetSeconds;                     // per file; 0 = none
   std::string root;  // --root
   std::optional<double> timesteps_per_second;
   std::optional<unsigned> position_iterations;

@@ -10,6 +10,7 @@
 #include "commands/exit_status.h"
 #include "config/resolver.h"
 #include "util/numbers.h"
+#include "util/ros_package_path.h"
 
 namespace assetlint::commands {
 
@@ -44,6 +45,11 @@ void add_scope_options(CLI::App& app, CompositionScope& scope) {
                  "tree, else the directory of its asset-lint.toml)")
       ->check(CLI::ExistingDirectory);
   app.add_flag("--allow-outside-root", scope.allow_outside_root, "Let references (includes, layers, meshes, links) read files outside that tree");
+  app.add_option("--package-path", scope.package_paths,
+                 "A directory of ROS packages that $(find pkg) and package:// resolve in, and that may be read "
+                 "(repeatable; after ROS_PACKAGE_PATH)")
+      ->check(CLI::ExistingDirectory)
+      ->allow_extra_args(false);
   app.add_option("--variant", scope.variants,
                  "Select this variant in every USD variant set of that name, SET=NAME (repeatable; wins over "
                  "[usd] variants and the stage's own selection)")
@@ -73,6 +79,7 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
   overrides.trees.push_back(std::filesystem::current_path(ec).string());
   overrides.root = scope.root;
   overrides.allow_outside_root = scope.allow_outside_root;
+  add_package_paths(scope.package_paths);
   for (const auto& v : scope.variants) overrides.variants.push_back(*variant_choice(v));
   config::SettingsResolver resolver(overrides, config);
   if (auto problem = resolver.prepare({path})) {

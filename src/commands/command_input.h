@@ -40,6 +40,7 @@ struct CompositionScope {
   std::string root;  // empty: the file's git work tree, else its asset-lint.toml's directory
   bool allow_outside_root = false;
   std::vector<std::string> variants;  // --variant SET=NAME
+  std::vector<std::string> package_paths;  // --package-path DIR: where ROS packages are found, and read
 };
 CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
                                 const CompositionScope& scope = {});

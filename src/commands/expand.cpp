@@ -12,7 +12,9 @@
 #include "engine/read_policy.h"
 #include "config/resolver.h"
 #include "engine/file_system.h"
+#include "engine/work_budget.h"
 #include "formats/xacro/xacro_reader.h"
+#include "util/ros_package_path.h"
 
 namespace assetlint::commands {
 
@@ -35,6 +37,7 @@ int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ost
   overrides.trees.push_back(std::filesystem::current_path(ec).string());
   overrides.root = scope.root;
   overrides.allow_outside_root = scope.allow_outside_root;
+  add_package_paths(scope.package_paths);
   for (const auto& arg : xacro_args) {
     const auto at = arg.find(":=");
     overrides.xacro_args.emplace_back(arg.substr(0, at), arg.substr(at + 2));
@@ -53,6 +56,7 @@ int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ost
     return kExitError;
   }
   xacro::XacroOptions options;
+  options.deadline = Deadline::for_one_file();
   options.root = config::checked_root(path, settings);
   for (const auto& [name, value] : settings.xacro.args) options.arguments[name] = xacro::ArgumentValue{value.value, value.origin, {}};
   const xacro::ExpandedText expanded =

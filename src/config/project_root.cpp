@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "config/config.h"
+#include "util/ros_package_path.h"
 
 namespace assetlint::config {
 namespace {
@@ -79,15 +80,8 @@ ReadPolicy read_policy(const std::string& path, const Settings& settings) {
   // link on the way makes that directory somewhere else.
   if (fs::weakly_canonical(directory, ec) == directory) roots.push_back(directory.string());
   // The packages a ROS workspace names are read as `$(find pkg)` and `package://` resolve
-  // them; the variable is the runner's, not the checked files'.
-  if (const char* packages = std::getenv("ROS_PACKAGE_PATH")) {
-    const std::string entries(packages);
-    for (std::size_t at = 0; at <= entries.size();) {
-      const std::size_t end = std::min(entries.find(':', at), entries.size());
-      if (end > at) roots.push_back(entries.substr(at, end - at));
-      at = end + 1;
-    }
-  }
+  // them; ROS_PACKAGE_PATH and --package-path are the runner's, not the checked files'.
+  for (std::string& entry : ros_package_search_path()) roots.push_back(std::move(entry));
   return ReadPolicy::confined_to(roots);
 }
 

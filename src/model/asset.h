@@ -73,6 +73,9 @@ struct Link {
   // MJCF body without <inertial> (or <compiler inertiafromgeom="true">) whose geoms give
   // MuJoCo a mass asset-lint cannot compute (a mesh, a height field): mass and inertia unknown.
   bool mass_from_geoms = false;
+  // The link is drawn (URDF <visual>): a part of the robot, not a frame, even where no
+  // simulator weighs the shape.
+  bool visual = false;
   std::vector<CollisionShape> collisions{};
 };
 
@@ -213,12 +216,20 @@ struct InheritedLiteral {
   std::size_t uses = 0;   // how many model values the reader took from it
 };
 
+// A URDF's <robot><mujoco><compiler> section, which MuJoCo's URDF importer applies to the
+// file's <inertia> tensors.
+struct UrdfMujocoCompiler {
+  double boundinertia = 0;
+  bool balanceinertia = false;
+};
+
 // One parsed asset: the files it was read from and the robot they describe.
 struct Asset {
   SourceFormat format = SourceFormat::Urdf;
   std::vector<std::shared_ptr<const SourceFile>> sources;  // indexed by FileId; [0] is the file checked
   Name robot_name;
   Span robot_span;
+  UrdfMujocoCompiler urdf_mujoco_compiler;  // URDF only; defaults when the file has no section
   std::vector<Link> links;
   std::vector<Joint> joints;
   Scene scene;

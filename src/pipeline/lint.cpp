@@ -34,9 +34,10 @@
 namespace assetlint {
 namespace {
 
-xacro::XacroOptions xacro_options(const std::string& path, const Settings& settings) {
+xacro::XacroOptions xacro_options(const std::string& path, const Settings& settings, const Deadline& deadline) {
   xacro::XacroOptions options;
   options.root = config::checked_root(path, settings);
+  options.deadline = deadline;
   for (const auto& [name, value] : settings.xacro.args) options.arguments[name] = xacro::ArgumentValue{value.value, value.origin, {}};
   return options;
 }
@@ -48,7 +49,7 @@ usda::ComposeOptions compose_options(const std::string& path, const Settings& se
 }
 
 ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const SourceFile> file,
-                const FileSystem& files, const Settings& settings) {
+                const FileSystem& files, const Settings& settings, const Deadline& deadline) {
   switch (kind) {
     case FileKind::Urdf: return urdf::read_urdf(std::move(file));
     case FileKind::Mjcf:
@@ -57,7 +58,7 @@ ReadResult read(const std::string& path, FileKind kind, std::shared_ptr<const So
                                                settings.mujoco.parsed()});
     case FileKind::Usda:
       return usda::read_usda(std::move(file), files, compose_options(path, settings));
-    case FileKind::Xacro: return xacro::read_xacro(std::move(file), files, xacro_options(path, settings));
+    case FileKind::Xacro: return xacro::read_xacro(std::move(file), files, xacro_options(path, settings, deadline));
     default: break;
   }
   ReadResult unsupported;
@@ -106,7 +107,8 @@ std::shared_ptr<const SourceFile> root_of(const std::string& path, std::string t
 }
 
 // The reader's findings the selection keeps, then the rules' (when the model is usable).
-std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std::set<FileId>& unparsable) {
+std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std::set<FileId>& unparsable,
+                              const Deadline& deadline) {
   std::vector<Diagnostic> diagnostics;
   for (auto& d : result.diagnostics) {
     if (d.rule == rules::kParseError.id) unparsable.insert(d.span.file == kNoFile ? 0 : d.span.file);
@@ -117,6 +119,10 @@ std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std:
   const physics::SharedArticulationScope shared_articulation(result.asset);
   for (const Rule* rule : rules::checks()) {
     if (!settings.selection.enabled(rule->info().id)) continue;
+    if (deadline.passed())
+      throw TimeBudgetExceeded(fmt::format("checking stopped: the file's time budget of {:g} s (--time-budget) ran out "
+                                           "before rule '{}'; the file is not checked",
+                                           deadline.budget_seconds(), rule->info().id));
     Reporter reporter(rule->info(), diagnostics);
     rule->check(result.asset, settings, reporter);
   }
@@ -127,7 +133,10 @@ std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std:
 
 }  // namespace
 
-FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& unconfined) {
+namespace {
+
+FileReport lint_text_within(const std::string& path, std::string text, const Settings& settings,
+                            const FileSystem& unconfined, const Deadline& deadline) {
   const ConfinedFileSystem files(unconfined, config::read_policy(path, settings));
   FileReport report;
   report.path = path;
@@ -150,12 +159,14 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
     usda::Stage stage = usda::compose_stage(file, files, options);
     const std::vector<usda::VariantSetUse> sets = stage.variant_sets;
     result = usda::read_stage(std::move(stage));
-    diagnostics = check(result, settings, unparsable);
-    const StageCheck check_variant = [&](ReadResult& read, std::set<FileId>& broken) { return check(read, settings, broken); };
+    diagnostics = check(result, settings, unparsable, deadline);
+    const StageCheck check_variant = [&](ReadResult& read, std::set<FileId>& broken) {
+      return check(read, settings, broken, deadline);
+    };
     check_physics_variants(file, files, options, sets, check_variant, result.asset.sources, diagnostics, unparsable);
   } else {
-    result = read(path, kind, std::move(file), files, settings);
-    diagnostics = check(result, settings, unparsable);
+    result = read(path, kind, std::move(file), files, settings, deadline);
+    diagnostics = check(result, settings, unparsable, deadline);
   }
   if (result.relocate) result.asset.sources = result.relocate(diagnostics);
   for (auto& d : diagnostics)
@@ -169,6 +180,19 @@ FileReport lint_text(const std::string& path, std::string text, const Settings& 
   report.diagnostics = std::move(diagnostics);
   report.sources = std::move(result.asset.sources);
   return report;
+}
+
+}  // namespace
+
+FileReport lint_text(const std::string& path, std::string text, const Settings& settings, const FileSystem& unconfined) {
+  try {
+    return lint_text_within(path, std::move(text), settings, unconfined, Deadline::for_one_file());
+  } catch (const TimeBudgetExceeded& stopped) {
+    FileReport report;
+    report.path = path;
+    report.error = fmt::format("'{}': {}", path, stopped.what());
+    return report;
+  }
 }
 
 std::optional<ReadResult> read_asset(const std::string& path, const Settings& settings, std::string& error,
@@ -218,7 +242,7 @@ LoadedAsset load_asset(const std::string& path, const Settings& settings, const 
     loaded.error = std::move(error);
     return loaded;
   }
-  loaded.read = read(path, kind, std::move(file), files, settings);
+  loaded.read = read(path, kind, std::move(file), files, settings, Deadline::for_one_file());
   if (loaded.read.usable) config::apply_drive_settings(loaded.read.asset, settings);
   return loaded;
 }

@@ -8,6 +8,7 @@
 #include "report/grouping.h"
 #include "report/report_util.h"
 #include "report/summary.h"
+#include "util/binary_data.h"
 
 namespace assetlint {
 namespace {
@@ -49,6 +50,8 @@ void write_excerpt(std::ostream& out, const FileReport& report, const Diagnostic
   std::size_t end = text.find('\n', begin);
   if (end == std::string_view::npos) end = text.size();
   const std::string_view line = text.substr(begin, end - begin - (end > begin && text[end - 1] == '\r' ? 1 : 0));
+  // A line of binary data is described by the message, not shown.
+  if (first_binary_byte(line, line.size())) return;
   const std::size_t start = std::min(d.span.offset, begin + line.size()) - begin;
   const std::size_t stop = std::min(d.span.end(), begin + line.size()) - begin;
   // Tabs are shown as four spaces on both lines, so that the carets line up in any terminal.

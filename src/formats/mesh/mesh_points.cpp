@@ -13,6 +13,8 @@
 #include <regex>
 #include <sstream>
 
+#include "util/ros_package_path.h"
+
 namespace assetlint::mesh {
 namespace {
 
@@ -115,25 +117,31 @@ std::optional<std::string> resolve_mesh(const std::string& filename, const std::
   const std::string package = rest.substr(0, rest.find('/'));
   const std::string inside = rest.find('/') == std::string::npos ? "" : rest.substr(rest.find('/') + 1);
   const std::regex name_element("<name>\\s*([^<\\s]+)\\s*</name>");
-  std::error_code ec;
   std::vector<fs::path> found;
-  for (fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec), end;
-       !ec && it != end; it.increment(ec)) {
-    if (it->is_directory(ec) && it->path().filename().string().starts_with(".")) {
-      it.disable_recursion_pending();
-      continue;
+  // The checked tree first, then the runner's package path (ROS_PACKAGE_PATH, --package-path).
+  std::vector<std::string> search{root};
+  for (std::string& entry : ros_package_search_path()) search.push_back(std::move(entry));
+  for (const std::string& top : search) {
+    if (!found.empty()) break;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(top, fs::directory_options::skip_permission_denied, ec), end;
+         !ec && it != end; it.increment(ec)) {
+      if (it->is_directory(ec) && it->path().filename().string().starts_with(".")) {
+        it.disable_recursion_pending();
+        continue;
+      }
+      if (it->path().filename() != "package.xml") continue;
+      std::ifstream file(it->path());
+      std::stringstream text;
+      text << file.rdbuf();
+      const std::string xml = text.str();
+      std::smatch match;
+      if (std::regex_search(xml, match, name_element) && match[1] == package) found.push_back(it->path().parent_path());
     }
-    if (it->path().filename() != "package.xml") continue;
-    std::ifstream file(it->path());
-    std::stringstream text;
-    text << file.rdbuf();
-    const std::string xml = text.str();
-    std::smatch match;
-    if (std::regex_search(xml, match, name_element) && match[1] == package) found.push_back(it->path().parent_path());
   }
   if (found.empty()) {
-    error = fmt::format("mesh '{}': no package.xml named '{}' under '{}' (pass --root to the directory that holds the "
-                        "package)",
+    error = fmt::format("mesh '{}': no package.xml named '{}' under '{}' (pass --package-path or --root with the "
+                        "directory that holds the package)",
                         filename, package, root);
     return std::nullopt;
   }

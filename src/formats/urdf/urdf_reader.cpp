@@ -39,6 +39,7 @@ class UrdfReader {
 
     result_.asset.robot_name = name_of(robot);
     result_.asset.robot_span = element_span(robot);
+    read_mujoco_compiler(robot);
     std::size_t links = 0, joints = 0;
     for (const Element* el = doc_.first_child(robot); el; el = doc_.next_sibling(el)) {
       links += el->name == "link" ? 1 : 0;
@@ -244,10 +245,22 @@ class UrdfReader {
     }
   }
 
+  // <mujoco><compiler boundinertia balanceinertia>: read as MuJoCo's URDF importer reads them.
+  void read_mujoco_compiler(const Element* robot) {
+    const Element* mujoco = doc_.first_child(robot, "mujoco");
+    const Element* compiler = mujoco ? doc_.first_child(mujoco, "compiler") : nullptr;
+    if (!compiler) return;
+    UrdfMujocoCompiler& section = result_.asset.urdf_mujoco_compiler;
+    if (const auto bound = attribute(compiler, "boundinertia"))
+      if (const auto value = parse_double(*bound)) section.boundinertia = *value;
+    section.balanceinertia = attribute(compiler, "balanceinertia") == std::optional<std::string_view>("true");
+  }
+
   void read_link(const Element* el) {
     Link link;
     link.name = name_of(el);
     link.span = element_span(el);
+    link.visual = doc_.first_child(el, "visual") != nullptr;
     if (const Element* in = doc_.first_child(el, "inertial")) {
       Inertial inertial;
       inertial.span = element_span(in);

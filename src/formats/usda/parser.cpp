@@ -1,5 +1,7 @@
 #include "formats/usda/parser.h"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -11,6 +13,7 @@
 
 #include "formats/usda/array_scan.h"
 #include "formats/usda/lexer.h"
+#include "util/binary_data.h"
 
 namespace assetlint::usda {
 
@@ -243,6 +246,12 @@ Layer Parser::parse_layer() {
   if (!h.ok) {
     const std::size_t start = text_.size() >= 3 && text_.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
     if (text_.compare(start, 5, "#usda") != 0 || text_.size() < start + 5) {
+      // Binary data is described, not quoted.
+      if (const auto binary = first_binary_byte(text_.substr(start)))
+        fail_at(fmt::format("binary data, not a USD layer: byte {} is U+{:04X}; a layer is '#usda 1.0' text or a "
+                            "'PXR-USDC' crate",
+                            start + *binary, static_cast<unsigned char>(text_[start + *binary])),
+                start + *binary, 1);
       fail_at("missing '#usda 1.0' header on the first line", start, 0);
     }
     fail_at("malformed header: expected '#usda <version>' on the first line", start, h.body_offset - start);

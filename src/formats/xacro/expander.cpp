@@ -565,6 +565,18 @@ class Expander {
 
   // ---- output ------------------------------------------------------------------------
 
+  // The clock is read every 4096 steps: often enough to stop within milliseconds of the
+  // budget, rarely enough to cost nothing.
+  void count_step(const Span& span) {
+    if (++steps_ > options_.max_steps)
+      fail(span, fmt::format("the expansion visited more than {} elements and macro calls; a macro calls itself "
+                             "more often than any robot needs",
+                             options_.max_steps));
+    if (steps_ % 4096 == 0 && options_.deadline.passed())
+      fail(span, fmt::format("the expansion ran out of the file's time budget of {:g} s (--time-budget)",
+                             options_.deadline.budget_seconds()));
+  }
+
   void spend(std::size_t bytes, const Span& span) {
     output_bytes_ += bytes;
     if (output_bytes_ > options_.max_output_bytes)
@@ -584,6 +596,7 @@ class Expander {
   struct Depth {
     Depth(Expander& e, const Span& span) : e_(e) {
       if (++e_.depth_ > kMaxWalkDepth) e_.fail(span, fmt::format("expansion nested deeper than {} levels", kMaxWalkDepth));
+      e_.count_step(span);
     }
     ~Depth() { --e_.depth_; }
     Expander& e_;
@@ -1112,6 +1125,7 @@ class Expander {
   CallChain chain_ = std::make_shared<const std::vector<CallFrame>>();
   std::size_t output_bytes_ = 0;
   std::size_t depth_ = 0;
+  std::size_t steps_ = 0;
   std::uint64_t comment_stop_ = 0;  // the mark drop_previous_comments stops at
 };
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/work_budget.h"
 #include "engine/diagnostic.h"
 #include "engine/file_system.h"
 #include "formats/xacro/expansion.h"
@@ -22,6 +23,10 @@ struct ExpandOptions {
   std::size_t max_macro_depth = 100;
   std::size_t max_include_depth = 50;
   std::size_t max_output_bytes = std::size_t{64} << 20;
+  // Elements and macro calls visited: a macro that calls itself twice per level writes nothing
+  // and so passes every other limit, in 2^depth steps.
+  std::size_t max_steps = 1'000'000;
+  Deadline deadline;  // the file's time budget
 };
 
 struct ExpandError {

@@ -1,12 +1,13 @@
 #include "formats/xacro/packages.h"
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
 #include <vector>
+
+#include "util/ros_package_path.h"
 
 namespace assetlint::xacro {
 namespace {
@@ -82,14 +83,7 @@ std::optional<std::string> find_ros_package(const std::string& name, const std::
     if (dir == dir.parent_path()) break;
   }
   if (!root.empty()) roots.push_back(fs::absolute(root, ec));
-  if (const char* path = std::getenv("ROS_PACKAGE_PATH")) {
-    std::string entries(path);
-    for (std::size_t at = 0; at <= entries.size();) {
-      const std::size_t end = std::min(entries.find(':', at), entries.size());
-      if (end > at) roots.emplace_back(entries.substr(at, end - at));
-      at = end + 1;
-    }
-  }
+  for (const std::string& entry : ros_package_search_path()) roots.emplace_back(entry);
   for (const auto& r : roots) {
     const auto& packages = packages_below(r.lexically_normal());
     if (auto it = packages.find(name); it != packages.end()) return it->second;

@@ -231,6 +231,7 @@ ExpandOptions expand_options(const XacroOptions& options) {
   expand.arguments = options.arguments;
   expand.root = options.root;
   expand.first_id = kFirstXacro;
+  expand.deadline = options.deadline;
   return expand;
 }
 

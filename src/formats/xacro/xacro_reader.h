@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "engine/work_budget.h"
 #include "engine/file_system.h"
 #include "formats/read_result.h"
 #include "formats/xacro/expander.h"
@@ -14,6 +15,7 @@ namespace assetlint::xacro {
 struct XacroOptions {
   std::map<std::string, ArgumentValue> arguments;
   std::string root;  // the checked tree, where $(find pkg) looks first
+  Deadline deadline;  // the file's time budget
 };
 
 ReadResult read_xacro(std::shared_ptr<const SourceFile> file, const FileSystem& files, const XacroOptions& options);

@@ -6,6 +6,8 @@
 #include <array>
 #include <cstring>
 
+#include "util/binary_data.h"
+
 namespace assetlint::xml {
 namespace {
 
@@ -120,6 +122,15 @@ class Scanner {
     scan_.carriage_return = bytes.carriage_return;
     // XML 1.0 allows no C0 control character but tab, LF and CR, not even in attribute
     // values (libxml2, and so ROS, reject the file). NUL bytes have their own messages below.
+    // A file with such a byte before its first '<' is binary data, not XML with a stray byte:
+    // it is described, not quoted.
+    if (const auto binary = first_binary_byte(text_.substr(pos), text_.find('<', pos) - pos)) {
+      problem(pos + *binary, 1,
+              fmt::format("binary data, not XML: byte {} is U+{:04X}, a control character no text file holds",
+                          pos + *binary, static_cast<unsigned char>(text_[pos + *binary])),
+              false);
+      return;
+    }
     for (std::size_t i = pos; bytes.control && i < text_.size(); ++i) {
       const auto c = static_cast<unsigned char>(text_[i]);
       if (c != 0 && c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
@@ -171,7 +182,13 @@ class Scanner {
       if (text_[pos] != '<') {
         // Text before the document: e.g. a log prefix captured with the file.
         std::size_t next = text_.find('<', pos);
-        if (next == std::string_view::npos) next = text_.size();
+        if (next == std::string_view::npos) {
+          // No markup at all: not an XML file. Its text is described, not quoted.
+          problem(pos, 0, "not XML: the file holds text and no element; an XML file starts with '<?xml' or an element",
+                  false);
+          pos = text_.size();
+          return;
+        }
         std::size_t junk_end = next;
         while (junk_end > pos && is_space(text_[junk_end - 1])) --junk_end;
         problem(pos, junk_end - pos,
