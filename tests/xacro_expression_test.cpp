@@ -113,6 +113,30 @@ TEST_CASE("xacro expressions: logic, comparisons, conditionals, strings", "[xacr
   CHECK(eval("[c for c in '\u00b5m']") == "['\u00b5', 'm']");
 }
 
+TEST_CASE("xacro expressions: str.find, rfind, index, rindex and count as Python answers them", "[xacro]") {
+  // Each expected value is what Python 3 prints for the same expression.
+  CHECK(eval("'right_arm'.find('right_') != -1") == "True");
+  CHECK(eval("'left_arm'.find('right_')") == "-1");
+  CHECK(eval("'abcabc'.find('c', 3)") == "5");
+  CHECK(eval("'abcabc'.find('c', 3, 5)") == "-1");
+  CHECK(eval("'abcabc'.find('a', -3)") == "3");
+  CHECK(eval("'abcabc'.rfind('b')") == "4");
+  CHECK(eval("'abcabc'.rfind('b', 0, 4)") == "1");
+  CHECK(eval("'abc'.find('')") == "0");
+  CHECK(eval("'abc'.find('', 3)") == "3");
+  CHECK(eval("'abc'.find('', 4)") == "-1");
+  CHECK(eval("'abc'.rfind('')") == "3");
+  CHECK(eval("'aaaa'.count('aa')") == "2");
+  CHECK(eval("'abc'.count('')") == "4");
+  CHECK(eval("'abc'.count('', 4)") == "0");
+  CHECK(eval("s.index('l')") == "2");
+  CHECK(eval("s.rindex('l')") == "3");
+  CHECK(error_of("s.index('z')") == "ValueError: substring not found");
+  CHECK(error_of("s.find(1)") == "TypeError: must be str, not int");
+  // Code points, not bytes.
+  CHECK(eval("'\u00b5m_\u00b5m'.find('m', 2)") == "4");
+}
+
 TEST_CASE("xacro expressions: lists, tuples, dicts and indexing", "[xacro]") {
   CHECK(eval("[0, 1+1, 2]") == "[0, 2, 2]");
   CHECK(eval("(0,1+1,2)") == "(0, 2, 2)");

@@ -788,6 +788,47 @@ class Evaluator {
     fail(fmt::format("NameError: name '{}' is not defined", name));
   }
 
+  // str.find, rfind, index, rindex and count with Python's optional start and end, all in code
+  // points as Python counts them.
+  Value substring_search(const std::string& s, const std::string& name, const Args& args) {
+    arity(name, args, 1, 3);
+    if (!args[0].is_string()) type_error(fmt::format("must be str, not {}", args[0].type_name()));
+    const std::vector<std::string> chars = characters(s), sub = characters(args[0].string());
+    const auto size = static_cast<std::int64_t>(chars.size()), width = static_cast<std::int64_t>(sub.size());
+    const auto bound = [&](std::size_t i, std::int64_t fallback) {
+      if (args.size() <= i || args[i].is_none()) return fallback;
+      if (!args[i].is_int() && !args[i].is_bool()) type_error("slice indices must be integers or None");
+      return normalize_index(args[i].integer(), chars.size(), true);
+    };
+    // A start past the end finds nothing, not even the empty string (Python's rule).
+    const bool start_past_end = args.size() > 1 && args[1].is_int() && args[1].integer() > size;
+    const std::int64_t lo = bound(1, 0), hi = bound(2, size);
+    const auto matches_at = [&](std::int64_t at) {
+      return std::equal(sub.begin(), sub.end(), chars.begin() + at);
+    };
+    if (name == "count") {
+      if (start_past_end || hi < lo) return Value(std::int64_t{0});
+      if (width == 0) return Value(hi - lo + 1);
+      std::int64_t n = 0;
+      for (std::int64_t at = lo; at + width <= hi;) {
+        if (matches_at(at)) { ++n; at += width; } else ++at;
+      }
+      return Value(n);
+    }
+    std::int64_t found = -1;
+    if (!start_past_end && hi - lo >= width) {
+      if (name == "find" || name == "index") {
+        for (std::int64_t at = lo; at + width <= hi && found < 0; ++at)
+          if (matches_at(at)) found = at;
+      } else {
+        for (std::int64_t at = hi - width; at >= lo && found < 0; --at)
+          if (matches_at(at)) found = at;
+      }
+    }
+    if (found < 0 && (name == "index" || name == "rindex")) fail("ValueError: substring not found");
+    return Value(found);
+  }
+
   Value method(const Value& object, const std::string& name, const Args& args) {
     if (object.is_string()) {
       const std::string& s = object.string();
@@ -840,6 +881,8 @@ class Evaluator {
         }
         return Value::list(std::move(parts));
       }
+      if (name == "find" || name == "rfind" || name == "index" || name == "rindex" || name == "count")
+        return substring_search(s, name, args);
       if (name == "join") {
         arity(name, args, 1, 1);
         std::string out;
