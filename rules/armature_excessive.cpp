@@ -59,7 +59,7 @@ class ArmatureExcessive final : public Rule {
       if (joint.actuation == Actuation::Passive && parent && !parent->world)
         c.motor_literal = actuated_sharing_literal(asset, joint);
       if (joint.actuation == Actuation::Passive || joint.actuation == Actuation::Linkage)
-        c.effect = follower_effect(model, asset, joint, armature);
+        c.effect = follower_effect(model, asset, joint, armature, c.effect_unknown);
       if (joint.actuation == Actuation::Passive && touches_nothing(model.articulation(), asset, joint)) {
         report_isolated(c, out);
         continue;
@@ -79,6 +79,7 @@ class ArmatureExcessive final : public Rule {
     bool lighter = true;  // the guide's lighter link; else everything the joint moves (Mᵢᵢ − armature)
     bool stand_in = false;  // the lighter link standing in for an unknown Mᵢᵢ: a lower bound
     bool with_followers = false;  // Jᵀ·M·J over the joint and the mimics that follow it
+    bool mechanism = false;       // MJCF: along the mechanism mimics and loop closures make (physics/linkage.h)
     bool partial = false;  // what a loop, coupling tendon or rope adds is left out (Joint::hidden_load)
     std::string name() const { return lighter ? "the lighter link" : "what it moves"; }
   };
@@ -87,6 +88,19 @@ class ArmatureExcessive final : public Rule {
                              const physics::EffectiveInertia& lighter, double armature) {
     Moved moved;
     const bool guide = asset.format != SourceFormat::Mjcf && guide_applies(asset, settings, joint);
+    // MJCF: a joint that mimics or loop closures tie to others moves their mechanism (a mimic
+    // follower is compared with its own Mᵢᵢ: its leader's drive is what moves it).
+    // The bodies alone: another joint's armature is no more a load than this one's.
+    if (const physics::Mechanism tied =
+            joint.is_mimic() ? physics::Mechanism{} : model.mechanism(joint, physics::Armatures{nullptr, true});
+        tied.tied() && tied.inertia.known && tied.inertia.value > 0) {
+      moved.known = true;
+      moved.value = tied.inertia.value;
+      moved.lighter = false;
+      moved.mechanism = true;
+      moved.partial = static_cast<bool>(joint.hidden_load);
+      return moved;
+    }
     if (!guide) {
       // A joint whose mimics follow it turns them too (a motor-side gear and the joint a gear
       // ratio ties to it): what it moves is the mechanism's Jᵀ·M·J, not its own subtree.
@@ -122,15 +136,50 @@ class ArmatureExcessive final : public Rule {
   };
 
   static std::optional<FollowerEffect> follower_effect(const DriveModel& model, const Asset& asset, const Joint& joint,
-                                                       double armature) {
+                                                       double armature, std::string& why) {
     const Joint* leader = joint.is_mimic() ? asset.followed_joint(joint) : nullptr;
-    if (!leader || leader->hidden_load) return std::nullopt;
+    // MJCF: the driven joint of the mechanism mimics and loop closures tie this one into.
+    if (asset.format == SourceFormat::Mjcf)
+      for (const Joint* tied : physics::tied_joints(asset, {&joint}))
+        if (tied != &joint && model.spring_drive(*tied)) {
+          leader = tied;
+          break;
+        }
+    if (!leader) {
+      why = "no spring drive moves the mechanism";
+      return std::nullopt;
+    }
+    if (leader->hidden_load) {
+      why = fmt::format("the drive of '{}' is judged on its own M₀ᵢᵢ: {}, with damping or a load the mechanism "
+                        "does not fold in",
+                        leader->name.text, leader->hidden_load->what);
+      return std::nullopt;
+    }
     const std::optional<DrivenJoint> driven = model.spring_drive(*leader);
-    if (!driven || driven->acceleration() || !driven->damping_known() || !(driven->damping > 0)) return std::nullopt;
-    const physics::ArticulatedInertia mechanism = physics::mechanism_inertia(model.articulation(), asset, *leader);
-    const double gearing = joint.mimic->multiplier.value;
-    FollowerEffect e{leader, mechanism.value, mechanism.value - armature * gearing * gearing};
-    if (!mechanism.known || !(e.without > 0)) return std::nullopt;
+    if (!driven || driven->acceleration() || !driven->damping_known() || !(driven->damping > 0)) {
+      why = fmt::format("the drive of '{}' has no known damping", leader->name.text);
+      return std::nullopt;
+    }
+    FollowerEffect e{leader, 0, 0};
+    if (const physics::Mechanism with = model.mechanism(*leader); with.tied()) {
+      const physics::Mechanism without = model.mechanism(*leader, physics::Armatures{&joint, false});
+      if (!with.inertia.known || !without.inertia.known) {
+        why = with.inertia.unknown_links.empty()
+                  ? with.inertia.reason
+                  : fmt::format("the mass of {} comes from geoms asset-lint cannot measure (a mesh, a height field, a shell)",
+                                name_list(with.inertia.unknown_links));
+        return std::nullopt;
+      }
+      e.with = with.inertia.value;
+      e.without = without.inertia.value;
+    } else {
+      const physics::ArticulatedInertia mechanism = physics::mechanism_inertia(model.articulation(), asset, *leader);
+      const double gearing = joint.mimic->multiplier.value;
+      if (!mechanism.known) return std::nullopt;
+      e.with = mechanism.value;
+      e.without = mechanism.value - armature * gearing * gearing;
+    }
+    if (!(e.without > 0)) return std::nullopt;
     const physics::SimulationRate& rate = driven->rate;
     const auto judge = [&](double inertia, double& settle, bool& stable) {
       const physics::Servo servo = rate.solver == physics::Solver::MuJoCo
@@ -165,6 +214,7 @@ class ArmatureExcessive final : public Rule {
     double damping = 0;            // what damps the joint's speed, model units (0: none known)
     double max_time_constant = 0;  // s
     std::optional<FollowerEffect> effect{};  // a mimic follower's: what its armature does to the leader's drive
+    std::string effect_unknown{};            // why `effect` could not be computed
     double harmless_effect = 0;            // the settling change under which an unchanged stability is harmless
     // How soon the joint's speed settles under its damping, armature included (0: no damping).
     double lag() const { return damping > 0 ? physics::inertial_time_constant(armature + moved.value, damping) : 0; }
@@ -229,6 +279,10 @@ class ArmatureExcessive final : public Rule {
            "marker or target a script places). Remove it if the body should move freely.");
   }
 
+  static bool asset_follows(const Joint& joint, const Joint& leader) {
+    return joint.mimic && joint.mimic->reference.text == leader.name.text;
+  }
+
   static double reflected(const Motor& motor) { return motor.gear_ratio * motor.gear_ratio * motor.rotor_inertia.value; }
 
   void report(const Candidate& c, Reporter& out) const {
@@ -271,18 +325,45 @@ class ArmatureExcessive final : public Rule {
       report_harmless_follower(c, at, amount, times, against, out);
       return;
     }
-    if (joint.actuation == Actuation::Passive || joint.actuation == Actuation::Linkage) {
+    if (joint.actuation == Actuation::Linkage && c.effect) {
+      const FollowerEffect& e = *c.effect;
+      Diagnostic& d = out.report(at, Severity::Warning,
+                                 fmt::format("armature {} of linkage joint {} ({}× {}) changes the drive of {} by {} %",
+                                             amount, short_name(joint), times, against, short_name(*e.leader),
+                                             format_number(e.change() * 100, 2)));
+      d.note(moved_text(c));
+      d.note(e.leader->name.span,
+             fmt::format("Moving with the linkage {} drives, the armature adds {} {} to its inertia along the drive (M₀ "
+                         "along the mechanism: {} with it, {} without): the drive settles with a time constant of {} s "
+                         "with it and {} s without, {}. No motor's rotor sits at this joint, so the armature is inertia "
+                         "the real mechanism does not have; if it only steadies the closed chain, keep it as small as "
+                         "does that.",
+                         joint_label(*e.leader), format_number(e.with - e.without, 3), c.unit(), format_number(e.with, 3),
+                         format_number(e.without, 3), format_number(e.settle_with, 3), format_number(e.settle_without, 3),
+                         e.stable_with == e.stable_without ? fmt::format("equally {} under {}", e.stable_with ? "stable" : "unstable", e.stability)
+                                                           : fmt::format("{} under {} only with it", e.stable_with ? "stable" : "unstable", e.stability)));
+      return;
+    }
+    if (joint.actuation == Actuation::Linkage) {
+      Diagnostic& d = out.report(at, Severity::Warning,
+                                 fmt::format("armature {} of linkage joint {} ({}× {}) with no motor of its own", amount,
+                                             short_name(joint), times, against));
+      d.note(moved_text(c));
+      d.note(fmt::format("A loop or coupling ties this joint to the driven mechanism, so the drive moves it, but no "
+                         "actuator names it: no motor's rotor is reflected onto it, and the armature is inertia the real "
+                         "mechanism does not have, which every drive of the linkage drags. What it does to that drive "
+                         "was not computed{}. If it only steadies a closed chain, keep it as small as does that.",
+                         c.effect_unknown.empty() ? std::string() : fmt::format(" ({})", c.effect_unknown)));
+      drive_effect(c, d);
+      return;
+    }
+    if (joint.actuation == Actuation::Passive) {
       Diagnostic& d = out.report(at, Severity::Warning,
                                  fmt::format("armature {} of {} ({}× {}) on a joint no actuator moves", amount,
                                              short_name(joint), times, against));
       d.note(moved_text(c));
-      d.note(joint.actuation == Actuation::Linkage
-                 ? "No actuator reaches this joint, directly or through a fixed tendon, but a loop or coupling ties it to "
-                   "the driven mechanism: no motor's rotor is reflected onto it, so the armature is inertia the real "
-                   "mechanism does not have, and every actuator that moves the linkage drags it. If it only steadies a "
-                   "closed chain, keep it as small as does that."
-                 : "No actuator reaches this joint, directly or through a fixed tendon, so no motor's rotor is reflected "
-                   "onto it: the armature is inertia the real mechanism does not have.");
+      d.note("No actuator reaches this joint, directly or through a fixed tendon, so no motor's rotor is reflected "
+             "onto it: the armature is inertia the real mechanism does not have.");
       drive_effect(c, d);
       return;
     }
@@ -403,23 +484,26 @@ class ArmatureExcessive final : public Rule {
   void report_harmless_follower(const Candidate& c, const Span& at, const std::string& amount, const std::string& times,
                                 const std::string& against, Reporter& out) const {
     const FollowerEffect& e = *c.effect;
+    const bool mimic = c.joint.is_mimic() && asset_follows(c.joint, *e.leader);
     Diagnostic& d = out.report(at, Severity::Info,
-                               fmt::format("armature {} of mimic follower {} ({}× {}) changes its leader's drive by {} %",
-                                           amount, short_name(c.joint), times, against,
-                                           format_number(e.change() * 100, 2)));
+                               fmt::format("armature {} of {} {} ({}× {}) changes its leader's drive by {} %",
+                                           amount, mimic ? "mimic follower" : "linkage joint", short_name(c.joint), times,
+                                           against, format_number(e.change() * 100, 2)));
     d.note(moved_text(c));
     d.note(e.leader->name.span,
-           fmt::format("Through its multiplier {} the armature adds {} {} to the mechanism that {} drives (Jᵀ·M·J: {} with it, "
-                       "{} without). The drive settles with a time constant of {} s with it and {} s without (1 / the "
-                       "servo's slowest decay rate), and its stability under {} is the same ({}).",
-                       format_number(c.joint.mimic->multiplier.value), format_number(e.with - e.without, 3), c.unit(),
-                       joint_label(*e.leader), format_number(e.with, 3), format_number(e.without, 3),
-                       format_number(e.settle_with, 3), format_number(e.settle_without, 3), e.stability,
-                       e.stable_with ? "stable both ways" : "unstable both ways"));
-    d.note(fmt::format("Under harmless_follower_effect ({} %): the follower's armature is inertia the real mechanism "
+           fmt::format("{} the armature adds {} {} to the mechanism that {} drives ({}: {} with it, {} without). The drive "
+                       "settles with a time constant of {} s with it and {} s without (1 / the servo's slowest decay "
+                       "rate), and its stability under {} is the same ({}).",
+                       mimic ? fmt::format("Through its multiplier {}", format_number(c.joint.mimic->multiplier.value))
+                             : std::string("Moving with the linkage the drive closes through its loop"),
+                       format_number(e.with - e.without, 3), c.unit(), joint_label(*e.leader),
+                       mimic ? "Jᵀ·M·J" : "M₀ along the mechanism", format_number(e.with, 3),
+                       format_number(e.without, 3), format_number(e.settle_with, 3), format_number(e.settle_without, 3),
+                       e.stability, e.stable_with ? "stable both ways" : "unstable both ways"));
+    d.note(fmt::format("Under harmless_follower_effect ({} %): the {}'s armature is inertia the real mechanism "
                        "does not have, but it changes nothing the drive does; remove it if the model should match the "
                        "mechanism.",
-                       format_number(c.harmless_effect * 100)));
+                       format_number(c.harmless_effect * 100), mimic ? "follower" : "linkage joint"));
   }
 
   // The natural frequency the drive would have without its armature, when the drive would then
@@ -521,8 +605,9 @@ class ArmatureExcessive final : public Rule {
         "For {}, everything the joint moves has {} {} about its axis ({}, without the armature; threshold {}×); "
         "armature = G²·I_rotor: this equals a rotor as heavy as that load behind a {}:1 gearbox.",
         joint_label(joint), format_number(c.moved.value, 3), c.unit(),
-        c.moved.with_followers ? "Jᵀ·M·J with the joints that mimic it moving at their multipliers and every other joint held"
-                               : "Mᵢᵢ with every other joint held",
+        c.moved.mechanism        ? "M₀ along the mechanism that mimics and loop closures tie it into (its bodies alone, no joint's armature), every other joint held"
+        : c.moved.with_followers ? "Jᵀ·M·J with the joints that mimic it moving at their multipliers and every other joint held"
+                                 : "Mᵢᵢ with every other joint held",
         format_number(c.factor), format_number(std::sqrt(c.ratio), 3));
     if (c.moved.partial)
       text += fmt::format(" That leaves out part of its load ({}), so the ratio overstates the armature's share{}.",

@@ -16,6 +16,12 @@ DriveModel::DriveModel(const Asset& asset, const Settings& settings)
     : asset_(asset), settings_(settings), articulation_(physics::shared_articulation(asset)), rate_(physics::effective_simulation(asset, settings)),
       gyration_scale_(physics::gyration_scale(asset)) {}
 
+physics::Mechanism DriveModel::mechanism(const Joint& joint, physics::Armatures armatures) const {
+  if (asset_.format != SourceFormat::Mjcf || physics::tied_joints(asset_, {&joint}).size() < 2) return {};
+  if (!matrix_) matrix_ = std::make_unique<physics::JointSpaceMatrix>(*articulation_);
+  return physics::drive_mechanism(*matrix_, asset_, joint, armatures);
+}
+
 std::optional<DrivenJoint> DriveModel::spring_drive(const Joint& joint) const {
   if (!is_single_dof(joint.type) || joint.is_mimic() || !joint.drive) return std::nullopt;
   const Drive& drive = *joint.drive;
@@ -61,7 +67,15 @@ JudgedInertia DriveModel::judged_inertia(const Joint& joint) const {
     judged.reason = inertia.reason;
   };
   if (asset_.format == SourceFormat::Mjcf) {
-    take(articulation_->joint_space_inertia(joint), InertiaBasis::JointSpace);
+    // The joints that mimics and loop closures tie to this one move with it: the drive moves
+    // the whole mechanism, and its inertia along the drive is what the drive sees.
+    // Not when the reader noted a load the model leaves out (a damped linkage, a rope): the
+    // rules then judge M₀ᵢᵢ and say what it leaves out.
+    const physics::Mechanism tied = joint.is_mimic() || joint.hidden_load ? physics::Mechanism{} : mechanism(joint);
+    // A mechanism that cannot be solved for a reason other than a missing mass (a loop across
+    // two trees): the joint's own M₀ᵢᵢ, as MuJoCo's dampratio takes it.
+    judged.mechanism = tied.tied() && (tied.inertia.known || !tied.inertia.unknown_links.empty());
+    take(judged.mechanism ? tied.inertia : articulation_->joint_space_inertia(joint), InertiaBasis::JointSpace);
     return judged;
   }
   const physics::ArticulatedInertia articulated = articulation_->inertia(joint);
@@ -85,7 +99,7 @@ JudgedInertia DriveModel::judged_inertia(const Joint& joint) const {
 std::string JudgedInertia::label() const {
   switch (basis) {
     case InertiaBasis::Unit: return "I = 1 (acceleration drive)";
-    case InertiaBasis::JointSpace: return "M₀ᵢᵢ";
+    case InertiaBasis::JointSpace: return mechanism ? "M₀ along the mechanism the drive moves" : "M₀ᵢᵢ";
     case InertiaBasis::LighterLink: return "the guide's lighter-link I";
     case InertiaBasis::Articulation: return "the articulation's I";
   }
@@ -135,9 +149,13 @@ std::string DrivenJoint::inertias_text() const {
   std::string articulation;
   if (judged.basis == InertiaBasis::JointSpace) {
     // An MJCF model: what MuJoCo divides by, M₀ᵢᵢ; 1/r stays in the notes for comparison.
-    const std::string m0 = judged.known ? fmt::format("M₀ᵢᵢ {} {}", format_number(judged.value, 3), inertia_unit())
-                                        : fmt::format("M₀ᵢᵢ: unknown ({})", judged.why_unknown());
-    lighter = m0 + " (MuJoCo's joint-space inertia at qpos0, armature included); " + lighter;
+    const char* symbol = judged.mechanism ? "M₀ along the mechanism" : "M₀ᵢᵢ";
+    const std::string m0 = judged.known ? fmt::format("{} {} {}", symbol, format_number(judged.value, 3), inertia_unit())
+                                        : fmt::format("{}: unknown ({})", symbol, judged.why_unknown());
+    lighter = m0 + (judged.mechanism ? " (MuJoCo's joint-space inertia at qpos0 over the joints that mimics and loop "
+                                       "closures tie to it, as those constraints let them move, armature included); "
+                                     : " (MuJoCo's joint-space inertia at qpos0, armature included); ") +
+              lighter;
   }
   if (articulated.known)
     articulation = fmt::format("articulation {} {}", format_number(articulated.value, 3), inertia_unit());

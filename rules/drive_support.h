@@ -1,6 +1,7 @@
 #pragma once
 // What the drive rules share: which joints are driven, the two inertias a drive is judged
 // on, the solver step and PhysX's drive row (docs/physics.md).
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -9,6 +10,8 @@
 #include "physics/articulation.h"
 #include "physics/drive.h"
 #include "physics/drive_row.h"
+#include "physics/joint_space_matrix.h"
+#include "physics/linkage.h"
 #include "physics/servo_step.h"
 
 namespace assetlint::rules {
@@ -29,6 +32,9 @@ struct JudgedInertia {
   bool known = false;
   double value = 0;     // kg·m² (kg for prismatic), armature included
   double armature = 0;  // the joint's own, included in value
+  // JointSpace on a joint that mimics or loop closures tie to others (MJCF): the inertia of
+  // the mechanism they make along the drive (physics/linkage.h), not the joint's own M₀ᵢᵢ.
+  bool mechanism = false;
   // Why the guide's lighter link stands in for the articulation ("articulation: unknown (…)").
   std::string fallback;
   std::vector<std::string> unknown_links;  // when not known: the massless links to blame
@@ -86,6 +92,9 @@ class DriveModel {
   JudgedInertia judged_inertia(const Joint& joint) const;
   const physics::Articulation& articulation() const { return *articulation_; }
   const physics::SimulationRate& rate() const { return rate_; }
+  // MJCF: the mechanism a drive on `joint` moves (the joints mimics and loop closures tie to
+  // it; physics/linkage.h) with the armatures `armatures` counts; not tied() when nothing ties the joint.
+  physics::Mechanism mechanism(const Joint& joint, physics::Armatures armatures = {}) const;
 
  private:
   const Asset& asset_;
@@ -93,6 +102,8 @@ class DriveModel {
   std::shared_ptr<const physics::Articulation> articulation_;
   physics::SimulationRate rate_;
   double gyration_scale_;  // physics::gyration_scale, for the lighter link's doubt
+  // The whole joint-space matrix, formed the first time a tied mechanism needs it.
+  mutable std::unique_ptr<physics::JointSpaceMatrix> matrix_;
 };
 
 // The drive as MuJoCo steps it, on `inertia`: the reader folds the joint's own damping into

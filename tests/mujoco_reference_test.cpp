@@ -94,7 +94,8 @@ constexpr const char* kGeomInertia =
     "primitive geoms only; the damping a dampratio derives from it stays unknown, and the rules skip it)";
 constexpr const char* kStandIn = "quantities depending on a mesh file absent here (MuJoCo compiled a stand-in)";
 constexpr const char* kMultiDof = "ball and free joints' own dofs (asset-lint's drive rules judge single-dof joints)";
-constexpr const char* kTransmission = "actuators acting through a tendon, site or body (only joint transmissions are modelled)";
+constexpr const char* kTransmission =
+    "actuators acting through a spatial tendon, site or body (joint and fixed-tendon transmissions are modelled)";
 constexpr const char* kSecondServo = "a second servo or motor on one joint (the first is what the rules judge)";
 constexpr const char* kReversed =
     "a range written upper bound first under limited=\"auto\": MuJoCo drops the limit, asset-lint keeps the range so "
@@ -117,6 +118,84 @@ bool from_geoms(const Asset& asset, const physics::ArticulatedInertia& inertia) 
            const Link* l = asset.find_link(link);
            return l && l->mass_from_geoms;
          });
+}
+
+// An actuator on a fixed tendon: its moments (gear·coef per joint) are the shares asset-lint
+// reads; the joints fall into groups (a joint and the tendon's joints that mimic it), and the
+// group's joint carries a drive with ratio G = Σ moment·multiplier: stiffness kp·G², damping
+// kv·G² plus the group's joint damping (each times multiplier²), force bound |forcerange|·|G|.
+void compare_tendon_actuator(const nlohmann::json& a, const nlohmann::json& joints, const std::vector<const Joint*>& ours,
+                             const Asset& asset, const Asset& asset_315, Comparison& c) {
+  const std::string element =
+      a["name"].is_null() ? fmt::format("actuator #{}", a["index"].get<int>()) : fmt::format("actuator '{}'", a["name"].get<std::string>());
+  struct Group {
+    double ratio = 0, damping = 0;
+  };
+  std::map<const Joint*, Group> groups;
+  for (const auto& entry : a["moments"]) {
+    const Joint& joint = *ours.at(entry[0].get<std::size_t>());
+    const double moment = entry[1];
+    const Joint* followed = joint.is_mimic() ? asset.followed_joint(joint) : nullptr;
+    const Joint* leader = followed ? followed : &joint;
+    const double multiplier = followed ? joint.mimic->multiplier.value : 1.0;
+    Group& group = groups[leader];
+    group.ratio += moment * multiplier;
+    group.damping += joints[entry[0].get<std::size_t>()]["dofs"][0]["damping"].get<double>() * multiplier * multiplier;
+    // The share asset-lint reads for this joint, on whichever joint carries the drive.
+    ++c.compared["tendon moment (gear·coef)"];
+    const Transmission* t = leader->transmission ? &*leader->transmission : nullptr;
+    const auto share = t ? std::find_if(t->shares.begin(), t->shares.end(),
+                                        [&](const TendonShare& s) { return s.joint == joint.name.text; })
+                         : std::vector<TendonShare>::const_iterator{};
+    if (!t || share == t->shares.end())
+      c.differences.push_back(fmt::format("{}: {} moves '{}' by {}, asset-lint has no such tendon share", c.model, element,
+                                          joint.name.text, number(moment)));
+    else
+      c.value("tendon moment (gear·coef)", element + " on '" + joint.name.text + "'", moment, share->coef);
+  }
+  const double kp = a["biasprm"].is_null() ? 0.0 : -a["biasprm"][1].get<double>();
+  const int gaintype = a["gaintype"], biastype = a["biastype"];
+  for (const auto& [leader, group] : groups) {
+    if (group.ratio == 0) continue;
+    const std::string on = element + " on '" + leader->name.text + "'";
+    const Transmission* t = leader->transmission ? &*leader->transmission : nullptr;
+    ++c.compared["transmission type (tendon)"];
+    if (!t || !t->through_tendon()) {
+      c.differences.push_back(fmt::format("{}: {}: MuJoCo's transmission is tendon '{}', asset-lint has none", c.model, on,
+                                          a["tendon"].is_null() ? "" : a["tendon"].get<std::string>()));
+      continue;
+    }
+    c.value("tendon ratio G", on, std::abs(group.ratio), t->ratio);
+    c.value("actuator_length0", on, a["length0"], t->length0);
+    if (gaintype != 0 || biastype != 1 || a["biasprm"].is_null() || !(kp > 0)) continue;  // servos only
+    ++c.compared["servo (tendon)"];
+    if (!leader->drive) {
+      c.differences.push_back(fmt::format("{}: {}: MuJoCo compiles a servo, asset-lint has no drive", c.model, on));
+      continue;
+    }
+    const double g2 = group.ratio * group.ratio;
+    const Drive& drive = *leader->drive;
+    c.value("stiffness (tendon, kp·G²)", on, kp * g2, drive.stiffness ? std::optional(drive.stiffness->value) : std::nullopt);
+    const double kv = -a["biasprm"][2].get<double>();
+    if (drive.damping_unknown.empty())
+      c.value("damping (tendon, kv·G² + joint damping)", on, kv * g2 + group.damping,
+              drive.damping ? drive.damping->value : 0.0, 1e-9);
+    else
+      c.skip(kGeomInertia, on + " kv");
+    if (!a["kv_operational"].is_null()) {
+      const Joint& leader_315 = asset_315.joints[*asset.index_of(*leader)];
+      const Drive* drive_315 = leader_315.drive ? &*leader_315.drive : nullptr;
+      c.value("damping from dampratio, MuJoCo 3.15 rule (tendon, kv·G² from (J·M⁻¹·Jᵀ)⁻¹ + joint damping)", on,
+              a["kv_operational"].get<double>() * g2 + group.damping,
+              drive_315 && drive_315->damping ? std::optional(drive_315->damping->value) : std::nullopt, 1e-6);
+    }
+    const auto bound = std::max(std::abs(a["forcerange"][0].get<double>()), std::abs(a["forcerange"][1].get<double>()));
+    if (a["forcelimited"].get<bool>())
+      c.value("max force (tendon, |forcerange|·|G|)", on, bound * std::abs(group.ratio),
+              drive.max_force ? std::optional(drive.max_force->value) : std::nullopt);
+    else
+      c.absent("max force (tendon, |forcerange|·|G|)", on, drive.max_force);
+  }
 }
 
 void compare_model(const fs::path& path, const nlohmann::json& compiled, Comparison& c) {
@@ -229,7 +308,10 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
     const std::string element =
         a["name"].is_null() ? fmt::format("actuator #{}", a["index"].get<int>()) : fmt::format("actuator '{}'", a["name"].get<std::string>());
     if (a["joint"].is_null()) {
-      c.skip(kTransmission, element);
+      if (a["transmission"] == "tendon" && !a["moments"].is_null() && !a["moments"].empty())
+        compare_tendon_actuator(a, joints, ours, asset, read_315.asset, c);
+      else
+        c.skip(kTransmission, element);
       continue;
     }
     const Joint& joint = *ours.at(a["joint"].get<std::size_t>());

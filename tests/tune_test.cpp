@@ -232,7 +232,7 @@ TEST_CASE("tune: bad input is one line naming it, exit 2", "[tune][cli]") {
   auto ambiguous = run_cli({"tune", "two.urdf"}, dir.path());
   CHECK(ambiguous.exit_code == 2);
   CHECK(ambiguous.err == "asset-lint tune: error: two.urdf: 2 joints could be the driven one ('j1', 'j2'); name it "
-                         "with --joint or [gripper] driven_joint\n");
+                         "with --joint or [gripper] driven_joint in asset-lint.toml\n");
   test::write_file(dir.path() / "fixed.urdf", R"(<robot name="f"><link name="a"/><link name="b"/>
   <joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint></robot>
 )");

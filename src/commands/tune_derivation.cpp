@@ -593,7 +593,7 @@ Settings with_spec_flags(Settings settings, const SpecFlags& flags) {
 }
 
 const Joint* tune_joint(const Asset& asset, const Settings& settings, const std::optional<std::string>& requested,
-                        std::string& error) {
+                        std::string& error, const char* joint_flag) {
   std::string name;
   std::string source;
   if (requested) {
@@ -635,8 +635,8 @@ const Joint* tune_joint(const Asset& asset, const Settings& settings, const std:
   }
   std::string list;
   for (const Joint* joint : candidates) list += (list.empty() ? "'" : ", '") + joint->name.text + "'";
-  error = fmt::format("{} joints could be the driven one ({}); name it with --joint or [gripper] driven_joint",
-                      candidates.size(), list);
+  error = fmt::format("{} joints could be the driven one ({}); name it with {}[gripper] driven_joint in asset-lint.toml",
+                      candidates.size(), list, joint_flag ? fmt::format("{} or ", joint_flag) : std::string());
   return nullptr;
 }
 

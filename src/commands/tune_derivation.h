@@ -79,9 +79,11 @@ struct TuneDerivation {
 // Which joint to tune: `requested` when given, else [gripper] driven_joint, else the
 // only non-mimic single-DOF joint with a drive (else the only such joint at all). On
 // failure, nullptr and one line saying why (unknown name, a mimic, ambiguous: the
-// candidates listed).
+// candidates listed). `joint_flag`: the option of the calling command that names a joint
+// ("--joint"), or nullptr for a command without one: the message then names only
+// [gripper] driven_joint, so it never suggests an option the command rejects.
 const Joint* tune_joint(const Asset& asset, const Settings& settings, const std::optional<std::string>& requested,
-                        std::string& error);
+                        std::string& error, const char* joint_flag = "--joint");
 
 // Walks the guide's steps for `joint` (settings already carry the flags).
 TuneDerivation derive(const std::string& path, const Asset& asset, const Settings& settings, const Joint& joint);

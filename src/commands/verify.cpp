@@ -85,7 +85,7 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   const Settings& settings = input.settings;
   const Asset& asset = input.loaded.read.asset;
   std::string error;
-  const Joint* joint = tune_joint(asset, settings, std::nullopt, error);
+  const Joint* joint = tune_joint(asset, settings, std::nullopt, error, nullptr);  // verify has no --joint
   if (!joint) return fail(fmt::format("{}: {}", path, error));
   const Drive* drive = joint->drive ? &*joint->drive : nullptr;
   if (!drive || !drive->stiffness || !(drive->stiffness->value > 0))

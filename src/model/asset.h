@@ -152,11 +152,26 @@ struct HiddenLoad {
 // contact and the reaction of their links.
 enum class Actuation { Unknown, Actuated, Passive, Linkage };
 
-// The actuator's transmission ratio where the asset declares one (MJCF actuator `gear`):
-// joint torque = ratio · actuator force, so an armature implies I_rotor = armature / ratio².
+// One joint of an MJCF fixed tendon: the tendon's length is Σ coef·q over its joints.
+struct TendonShare {
+  std::string joint;
+  double coef = 1.0;  // the tendon's coef times the actuator's gear: the joint's share of the force
+  Span span;          // the tendon's <joint> element
+};
+
+// The actuator's transmission ratio where the asset declares one (MJCF actuator `gear`, or the
+// fixed tendon an actuator pulls): joint torque = ratio · actuator force, so an armature
+// implies I_rotor = armature / ratio². On a fixed tendon the ratio is d(length)/dq along the
+// joint carrying the drive, the joints that mimic it moving with it: Σ coefᵢ·multiplierᵢ.
 struct Transmission {
   double ratio = 1.0;
   Span span;
+  // A fixed-tendon transmission (MJCF): empty for a joint transmission.
+  std::string tendon;               // "fixed tendon 'split'"
+  std::string actuator;             // "actuator 'fingers_actuator'"
+  std::vector<TendonShare> shares;  // every joint the tendon moves, in the tendon's order
+  double length0 = 0;               // the actuator's length at the reference pose: Σ coef·q₀
+  bool through_tendon() const { return !shares.empty(); }
 };
 
 struct Joint {
@@ -208,6 +223,17 @@ struct Scene {
   Span integrator_span;
 };
 
+// A constraint that closes a kinematic loop between two links of the robot (MJCF
+// <equality><connect> or <weld>): the anchor point of link1 is held to the point of link2
+// that coincides with it at the reference pose; a weld holds their orientations too.
+struct LoopClosure {
+  std::string link1, link2;                          // link2 empty: the world
+  Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // in link1's frame, m
+  bool weld = false;
+  Span span;
+  std::string label;  // "the connect at line 173"
+};
+
 // A literal that several elements inherit (a value in an MJCF default class): an edit to it
 // changes every one of them.
 struct InheritedLiteral {
@@ -234,6 +260,7 @@ struct Asset {
   std::vector<Joint> joints;
   Scene scene;
   std::vector<InheritedLiteral> inherited_literals;  // in (file, offset) order
+  std::vector<LoopClosure> loops;                     // MJCF connect and weld equalities between the robot's links
   // USD: prim paths whose opinions a layer that could not be read would have brought ("" for a
   // sublayer: the whole stage). A body named under one may be defined there, so no rule may
   // call it undefined.

@@ -344,11 +344,16 @@ function compile(modelPath) {
       }
     }
     const osExcluded = treeTainted.has(jointTrn ? m.body_rootid[m.jnt_bodyid[target]] : -1);
+    // A tendon's moment per joint (a fixed tendon's joints are single-dof: dof = joint's dofadr).
+    const dofJoint = (dof) => { for (let j = m.njnt - 1; j >= 0; --j) if (m.jnt_dofadr[j] <= dof) return j; return -1; };
     actuators.push({
       index: a,
       name: name(O.mjOBJ_ACTUATOR, a),
       transmission: trnNames[trn] ?? String(trn),
       joint: jointTrn ? target : null,
+      tendon: trn === 3 ? name('tendon', target) : null,
+      moments: trn === 3 ? (rows[0] ?? []).map(([dof, moment]) => [dofJoint(dof), moment]) : null,
+      length0: m.actuator_length0[a],
       gear: m.actuator_gear[6 * out],
       gaintype: m.actuator_gaintype[a],
       biastype: m.actuator_biastype[a],

@@ -123,44 +123,89 @@ Joint* joint_named(Asset& asset, std::string_view name) {
 
 // MuJoCo damps a joint with its actuators' kv and the joint's own damping alike. One literal
 // stays as written (a fix can rewrite it); two make a sum no single literal holds.
-OptQuantity plus_joint_damping(const OptQuantity& actuator, const Joint& joint) {
-  if (!joint.joint_damping || joint.joint_damping->value <= 0) return actuator;
-  if (!actuator || actuator->value == 0) return joint.joint_damping;
-  return Quantity::unauthored(actuator->value + joint.joint_damping->value, actuator->unit);
+OptQuantity plus_joint_damping(const OptQuantity& actuator, const OptQuantity& joint_damping) {
+  if (!joint_damping || joint_damping->value <= 0) return actuator;
+  if (!actuator || actuator->value == 0) return joint_damping;
+  return Quantity::unauthored(actuator->value + joint_damping->value, actuator->unit);
 }
+
+}  // namespace
+
+namespace {
+
+// The actuator's parameters with its class chain applied; nullopt for an unknown class.
+std::optional<Params> actuator_params(const XMLElement* el, const Defaults& defaults, Values& values) {
+  const char* cls = el->Attribute("class");
+  if (cls && !defaults.has_class(cls)) {
+    values.unknown_class(values.value_span(own(el, "class"), "class"), "class", cls);
+    return std::nullopt;
+  }
+  Params p;
+  for (const XMLElement* d : defaults.elements(cls ? cls : "main", "actuator")) apply(d, p, values);
+  apply(el, p, values);
+  return p;
+}
+
+std::string actuator_label(const XMLElement* el) {
+  const char* name = el->Attribute("name");
+  return name ? fmt::format("actuator '{}'", name) : fmt::format("<{}> actuator", el->Name());
+}
+
+// Kinds asset-lint does not step: one info says the element is not judged.
+bool judged_kind(const XMLElement* el, const std::string& label, const std::string& moved, Values& values) {
+  const std::string_view tag = el->Name();
+  if (tag == "position" || tag == "general" || tag == "motor" || tag == "velocity") return true;
+  // <pid> and the redesigned <dcmotor> (MuJoCo 3.12) carry controller state asset-lint does not step.
+  const bool newer = tag == "pid" || tag == "dcmotor";
+  values.unsupported(values.element_span(el), fmt::format("{} is not judged: asset-lint does not model <{}> actuators{}",
+                                                          label, tag, newer ? " (MuJoCo 3.12 and later)" : ""))
+      .note(fmt::format("No rule judges what it does to {} (its gains, damping or force bound); the joint "
+                        "counts as actuated.",
+                        moved));
+  return false;
+}
+
+// What a fixed tendon adds to the drive of the joint carrying it: the other joints of its
+// group (the mimics that move with it) and the tendon's moment on every joint it reaches.
+struct TendonDrive {
+  std::vector<std::pair<const Joint*, double>> group;  // joint, multiplier (1 for the joint itself)
+  std::vector<std::pair<std::size_t, double>> moment;  // asset.joints index, gear·coef
+};
+
+void drive_joint(const XMLElement* el, const Params& p, const std::string& label, Joint* joint, double g,
+                 const TendonDrive* tendon, const Compiler& compiler, Values& values, Asset& asset,
+                 std::vector<DampRatio>& damp_ratios, std::vector<Damper>& dampers);
 
 }  // namespace
 
 void read_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler,
                    const FixedTendons& tendons, Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios,
-                   std::vector<Damper>& dampers) {
-  const std::string_view tag = el->Name();
-  const char* cls = el->Attribute("class");
-  if (cls && !defaults.has_class(cls)) {
-    values.unknown_class(values.value_span(own(el, "class"), "class"), "class", cls);
-    return;
-  }
-  Params p;
-  for (const XMLElement* d : defaults.elements(cls ? cls : "main", "actuator")) apply(d, p, values);
-  apply(el, p, values);
-
-  const char* name = el->Attribute("name");
-  const std::string label = name ? fmt::format("actuator '{}'", name) : fmt::format("<{}> actuator", tag);
+                   std::vector<Damper>& dampers, std::vector<const XMLElement*>& on_tendons) {
+  const std::string label = actuator_label(el);
   const char* joint_name = el->Attribute("joint");
   if (!joint_name) joint_name = el->Attribute("jointinparent");
   if (!joint_name) {
-    if (const char* tendon = el->Attribute("tendon"); tendon && tendons.contains(tendon))
-      for (const std::string& moved : tendons.at(tendon))
-        if (Joint* j = joint_named(asset, moved)) j->actuation = Actuation::Actuated;
+    if (const char* tendon = el->Attribute("tendon"); tendon && tendons.contains(tendon)) {
+      for (const TendonJoint& moved : tendons.at(tendon).joints)
+        if (Joint* j = joint_named(asset, moved.joint)) j->actuation = Actuation::Actuated;
+      on_tendons.push_back(el);
+      return;
+    }
     for (const char* other : {"tendon", "site", "body", "cranksite"})
       if (const char* target = el->Attribute(other)) {
+        if (!actuator_params(el, defaults, values)) return;
         values.unsupported(values.element_span(el), fmt::format("{} acts through {} '{}'", label, other, target))
-            .note("Only joint transmissions are modelled: the joints it moves count as undriven.");
+            .note("asset-lint models joint and fixed-tendon transmissions: no drive rule judges this actuator (its "
+                  "stiffness, damping ratio, natural frequency or force bound), and no joint of the model is called "
+                  "undriven, since it may move any of them.");
         return;
       }
     values.error(values.element_span(el), fmt::format("{} names no joint, tendon, site or body", label));
     return;
   }
+  const std::optional<Params> params = actuator_params(el, defaults, values);
+  if (!params) return;
+  const Params& p = *params;
   Joint* joint = joint_named(asset, joint_name);
   if (!joint) {
     values.error(values.value_span(own(el, "joint"), "joint"), fmt::format("{} names unknown joint '{}'", label, joint_name));
@@ -168,20 +213,93 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   }
   joint->actuation = Actuation::Actuated;
   if (p.gear.attr && std::abs(p.gear.value) != 1.0 && p.gear.value != 0.0)
-    joint->transmission = Transmission{std::abs(p.gear.value), values.token_span(p.gear.attr, "gear", 0)};
-  if (tag != "position" && tag != "general" && tag != "motor" && tag != "velocity") {
-    // <pid> and the redesigned <dcmotor> (MuJoCo 3.12) carry controller state asset-lint does not step.
-    const bool newer = tag == "pid" || tag == "dcmotor";
-    values.unsupported(values.element_span(el), fmt::format("{} is not judged: asset-lint does not model <{}> actuators{}",
-                                                            label, tag, newer ? " (MuJoCo 3.12 and later)" : ""))
-        .note(fmt::format("No rule judges what it does to joint '{}' (its gains, damping or force bound); the joint "
-                          "counts as actuated.",
-                          joint_name));
-    return;
+  {
+    Transmission transmission;
+    transmission.ratio = std::abs(p.gear.value);
+    transmission.span = values.token_span(p.gear.attr, "gear", 0);
+    joint->transmission = std::move(transmission);
   }
+  if (!judged_kind(el, label, fmt::format("joint '{}'", joint_name), values)) return;
+  drive_joint(el, p, label, joint, p.gear.value, nullptr, compiler, values, asset, damp_ratios, dampers);
+}
+
+void read_tendon_actuator(const XMLElement* el, const Defaults& defaults, const Compiler& compiler,
+                          const FixedTendons& tendons, const std::unordered_map<std::string, double>& qpos0,
+                          Values& values, Asset& asset, std::vector<DampRatio>& damp_ratios, std::vector<Damper>& dampers) {
+  const std::optional<Params> params = actuator_params(el, defaults, values);
+  if (!params) return;
+  const Params& p = *params;
+  const std::string label = actuator_label(el);
+  const FixedTendon& tendon = tendons.at(el->Attribute("tendon"));
+  if (!judged_kind(el, label, tendon.label, values)) return;
+  const double g = p.gear.value;
+  // Each joint of the tendon, or the joint it mimics: the groups that move as one.
+  TendonDrive shared;
+  std::vector<std::pair<Joint*, TendonDrive>> groups;
+  std::vector<TendonShare> shares;
+  double length0 = 0;
+  for (const TendonJoint& share : tendon.joints) {
+    Joint* joint = joint_named(asset, share.joint);
+    if (!joint) {
+      values.error(share.span, fmt::format("{} names unknown joint '{}'", tendon.label, share.joint));
+      return;
+    }
+    shares.push_back({share.joint, g * share.coef, share.span});
+    if (const auto at = qpos0.find(share.joint); at != qpos0.end()) length0 += g * share.coef * at->second;
+    shared.moment.emplace_back(static_cast<std::size_t>(joint - asset.joints.data()), g * share.coef);
+    Joint* leader = joint;
+    double multiplier = 1.0;
+    if (const Joint* followed = joint->is_mimic() ? asset.followed_joint(*joint) : nullptr) {
+      leader = &asset.joints[*asset.index_of(*followed)];
+      multiplier = joint->mimic->multiplier.value;
+    }
+    auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g2) { return g2.first == leader; });
+    if (group == groups.end()) group = groups.insert(groups.end(), {leader, TendonDrive{{{leader, 1.0}}, {}}});
+    if (leader != joint) group->second.group.emplace_back(joint, multiplier);
+  }
+  for (auto& [leader, drive] : groups) {
+    if (!is_single_dof(leader->type)) continue;
+    // The tendon's rate per unit rate of the group's joint.
+    double ratio = 0;
+    for (const TendonJoint& share : tendon.joints) {
+      const Joint* joint = joint_named(asset, share.joint);
+      for (const auto& [member, multiplier] : drive.group)
+        if (member == joint) ratio += g * share.coef * multiplier;
+    }
+    if (ratio == 0) continue;  // the group's motion leaves the tendon's length unchanged: no drive on it
+    drive.moment = shared.moment;
+    Transmission transmission;
+    transmission.ratio = std::abs(ratio);
+    transmission.span = values.element_span(el);
+    transmission.tendon = tendon.label;
+    transmission.actuator = label;
+    transmission.shares = shares;
+    transmission.length0 = length0;
+    leader->transmission = std::move(transmission);
+    drive_joint(el, p, label, leader, ratio, &drive, compiler, values, asset, damp_ratios, dampers);
+  }
+}
+
+namespace {
+
+// Joint damping on the group's motion: each joint's damping times its multiplier², the
+// joint's own literal kept when it is the only one.
+OptQuantity group_damping(const Joint& joint, const TendonDrive* tendon) {
+  OptQuantity sum = joint.joint_damping;
+  if (!tendon) return sum;
+  for (const auto& [member, multiplier] : tendon->group) {
+    if (member == &joint || !member->joint_damping || member->joint_damping->value <= 0) continue;
+    const double add = member->joint_damping->value * multiplier * multiplier;
+    sum = Quantity::unauthored((sum ? sum->value : 0.0) + add, member->joint_damping->unit);
+  }
+  return sum;
+}
+
+void drive_joint(const XMLElement* el, const Params& p, const std::string& label, Joint* joint, double g,
+                 const TendonDrive* tendon, const Compiler& compiler, Values& values, Asset& asset,
+                 std::vector<DampRatio>& damp_ratios, std::vector<Damper>& dampers) {
   if (!is_single_dof(joint->type)) return;
   const bool angular = is_angular(joint->type);
-  const double g = p.gear.value;
   const bool force_limited = p.forcelimited.value_or(p.forcerange && compiler.autolimits);
   const bool ctrl_limited = p.ctrllimited.value_or(p.ctrlrange && compiler.autolimits);
   const Unit force_unit = angular ? Unit::NewtonMeter : Unit::Newton;
@@ -214,13 +332,17 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
     const bool damp_ratio = p.bias_velocity.name && std::string_view(p.bias_velocity.name) == "dampratio";
     if (damp_ratio || (position_like && p.bias_velocity.value < 0)) {
       // The joint's own damping is added to the derived kv then.
-      damp_ratios.push_back({static_cast<std::size_t>(joint - asset.joints.data()), -p.bias_velocity.value, p.gain.value, g,
-                             values.token_span(p.bias_velocity.attr, p.bias_velocity.name, p.bias_velocity.token), label});
+      DampRatio request{static_cast<std::size_t>(joint - asset.joints.data()), -p.bias_velocity.value, p.gain.value, g,
+                        tendon ? tendon->moment : std::vector<std::pair<std::size_t, double>>{},
+                        values.token_span(p.bias_velocity.attr, p.bias_velocity.name, p.bias_velocity.token), label};
+      const OptQuantity damping = group_damping(*joint, tendon);
+      request.joint_damping = damping ? damping->value : 0.0;
+      damp_ratios.push_back(std::move(request));
     } else {
       if (p.bias_velocity.attr || p.bias_velocity.value != 0)
         drive.damping = quantity(p.bias_velocity, angular ? Unit::NewtonMeterSecondPerRadian : Unit::NewtonSecondPerMeter,
                                  g * g, values);
-      drive.damping = plus_joint_damping(drive.damping, *joint);
+      drive.damping = plus_joint_damping(drive.damping, group_damping(*joint, tendon));
     }
     if (force_limited && p.forcerange) drive.max_force = range_bound(p.forcerange, "forcerange", force_unit, std::abs(g), values);
     joint->drive = std::move(drive);
@@ -239,6 +361,8 @@ void read_actuator(const XMLElement* el, const Defaults& defaults, const Compile
   if (effort && !joint->effort) joint->effort = effort;
 }
 
+}  // namespace
+
 void add_dampers(const std::vector<Damper>& dampers, Asset& asset) {
   for (const Damper& damper : dampers) {
     Joint& joint = asset.joints[damper.joint];
@@ -251,7 +375,7 @@ void add_dampers(const std::vector<Damper>& dampers, Asset& asset) {
       drive.type_span = damper.span;
       drive.stiffness = Quantity::unauthored(0, is_angular(joint.type) ? Unit::NewtonMeterPerRadian : Unit::NewtonPerMeter);
       const double joint_damping = joint.joint_damping ? joint.joint_damping->value : 0.0;
-      drive.damping = plus_joint_damping(kv, joint);
+      drive.damping = plus_joint_damping(kv, joint.joint_damping);
       drive.max_force = damper.max_force;
       if (joint_damping > 0)
         drive.damping_origin = fmt::format("{}: kv {}, plus the joint's damping {}: {}", damper.label,

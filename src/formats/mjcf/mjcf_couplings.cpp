@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string_view>
 
 #include <fmt/format.h>
 
+#include "physics/articulation.h"
+#include "physics/joint_space_matrix.h"
+#include "physics/linkage.h"
 #include "util/numbers.h"
 
 namespace assetlint::mjcf {
@@ -24,13 +28,19 @@ constexpr double kCouplingWidth = 0.1;
 struct Bodies {
   std::set<std::string> mocap;
   std::map<std::string, std::string> site_body;  // also wrap geoms: a tendon pulls on both
+  std::map<std::string, Eigen::Vector3d> site_pos;  // sites written directly in their body: pos in its frame
 };
 
 void walk_bodies(const MjcfSources& sources, const XMLElement* parent, const std::string& body, Bodies& out) {
   for (const XMLElement* el : sources.children(parent)) {
     const std::string_view tag = el->Name();
     if (tag == "site" || tag == "geom") {
-      if (const char* name = el->Attribute("name")) out.site_body.emplace(name, body);
+      if (const char* name = el->Attribute("name")) {
+        out.site_body.emplace(name, body);
+        const bool in_body = std::string_view(parent->Name()) == "body";
+        const auto pos = parse_doubles(el->Attribute("pos") ? el->Attribute("pos") : "0 0 0");
+        if (tag == "site" && in_body && pos && pos->size() == 3) out.site_pos.emplace(name, Eigen::Vector3d((*pos)[0], (*pos)[1], (*pos)[2]));
+      }
     } else if (tag == "body" || tag == "frame") {
       const char* name = el->Attribute("name");
       const std::string here = tag == "frame" ? body : name ? std::string(name) : std::string();
@@ -75,16 +85,17 @@ std::optional<std::string> side(const XMLElement* el, const char* body, const ch
   return std::string("world");
 }
 
-struct FixedTendon {
+struct ReadTendon {
   std::vector<std::string> joints;
+  std::vector<TendonJoint> shares;
   bool coupling = false;
   Span span;
   std::string label;
 };
 
-FixedTendon read_fixed(const MjcfSources& sources, const XMLElement* fixed, const Defaults& defaults,
-                       const Compiler& compiler, Values& values, const Asset& asset) {
-  FixedTendon tendon;
+ReadTendon read_fixed(const MjcfSources& sources, const XMLElement* fixed, const Defaults& defaults,
+                      const Compiler& compiler, Values& values, const Asset& asset) {
+  ReadTendon tendon;
   double sweep = 0;
   bool sweep_known = true;
   for (const XMLElement* j : sources.children(fixed)) {
@@ -94,6 +105,7 @@ FixedTendon read_fixed(const MjcfSources& sources, const XMLElement* fixed, cons
     const auto index = joint_named(asset, tendon.joints.back());
     const Joint* joint = index ? &asset.joints[*index] : nullptr;
     const double coef = j->DoubleAttribute("coef", 1.0);
+    tendon.shares.push_back({tendon.joints.back(), coef, values.element_span(j)});
     if (joint && joint->lower && joint->upper) sweep += std::abs(coef) * (joint->upper->value - joint->lower->value);
     else sweep_known = false;
   }
@@ -148,7 +160,7 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
   for (const XMLElement* el : sections)
     if (std::string_view(el->Name()) == "worldbody") walk_bodies(sources, el, "", bodies);
 
-  std::map<std::string, FixedTendon> named;
+  std::map<std::string, ReadTendon> named;
   for (const XMLElement* el : sections) {
     if (std::string_view(el->Name()) != "tendon") continue;
     for (const XMLElement* fixed : sources.children(el)) {
@@ -157,10 +169,10 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
         continue;
       }
       if (std::string_view(fixed->Name()) != "fixed") continue;
-      FixedTendon tendon = read_fixed(sources, fixed, defaults, compiler, values, asset);
+      ReadTendon tendon = read_fixed(sources, fixed, defaults, compiler, values, asset);
       if (tendon.coupling) out.tendons.push_back({tendon.joints, tendon.span, tendon.label});
       if (const char* name = fixed->Attribute("name")) {
-        out.fixed[name] = tendon.joints;
+        out.fixed[name] = FixedTendon{tendon.shares, tendon.span, tendon.label};
         named[std::string(trim(name))] = std::move(tendon);
       }
     }
@@ -190,7 +202,15 @@ Couplings read_couplings(const MjcfSources& sources, const Defaults& defaults, c
         else if (bodies.mocap.contains(*b)) out.mocap_driven.push_back(*a);
         else {
           const Span span = values.element_span(c);
-          out.loops.push_back({*a, *b, span, fmt::format("the {} at line {}", tag, span.line)});
+          Loop loop{*a, *b, span, fmt::format("the {} at line {}", tag, span.line), tag == "weld", std::nullopt};
+          // The point held: `anchor` in body1's frame, or site1 (its position in its body).
+          if (const char* anchor = c->Attribute("anchor"); c->Attribute("body1")) {
+            const auto v = parse_doubles(anchor ? anchor : "0 0 0");
+            if (v && v->size() == 3) loop.anchor = Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
+          } else if (const char* site = c->Attribute("site1")) {
+            if (const auto at = bodies.site_pos.find(std::string(trim(site))); at != bodies.site_pos.end()) loop.anchor = at->second;
+          }
+          out.loops.push_back(std::move(loop));
         }
       }
     }
@@ -299,7 +319,31 @@ void write_turned(const TurnedBy& turned, Asset& asset) {
 
 void note_coupled_loads(const Couplings& couplings, Asset& asset) {
   TurnedBy turned;
-  for (const Loop& loop : couplings.loops) note_turned(asset, loop_members(asset, loop), loop.span, loop.label, turned);
+  // A loop closure the model holds (its anchor placed) whose mechanism can be solved is part
+  // of what the drive rules judge the drive on (physics/linkage.h): nothing of it is hidden.
+  std::unique_ptr<physics::Articulation> articulation;
+  std::unique_ptr<physics::JointSpaceMatrix> matrix;
+  const auto modelled = [&](const Loop& loop, const std::vector<std::size_t>& members) {
+    if (!loop.anchor || loop.body1 == "world") return false;
+    const auto driven = std::find_if(members.begin(), members.end(),
+                                     [&](std::size_t i) { return asset.joints[i].actuation == Actuation::Actuated; });
+    if (driven == members.end()) return true;  // no drive to hide it from
+    if (!matrix) {
+      asset.index_names();
+      articulation = std::make_unique<physics::Articulation>(asset);
+      matrix = std::make_unique<physics::JointSpaceMatrix>(*articulation);
+    }
+    const physics::Mechanism mechanism = physics::drive_mechanism(*matrix, asset, asset.joints[*driven]);
+    // The drive rules fold the mechanism's inertia into the drive, not the damping of the joints
+    // it moves: a loop whose other joints are damped still leaves that out.
+    const bool damped = std::any_of(mechanism.joints.begin(), mechanism.joints.end(), [&](const Joint* j) {
+      return j != &asset.joints[*driven] && j->joint_damping && j->joint_damping->value > 0;
+    });
+    return !damped && (mechanism.inertia.known || !mechanism.inertia.unknown_links.empty());
+  };
+  for (const Loop& loop : couplings.loops)
+    if (const auto members = loop_members(asset, loop); !modelled(loop, members))
+      note_turned(asset, members, loop.span, loop.label, turned);
   for (const CouplingTendon& tendon : couplings.tendons) {
     std::vector<std::size_t> members;
     for (const std::string& name : tendon.joints)
@@ -349,6 +393,20 @@ void mark_linkages(const Couplings& couplings, Asset& asset) {
       if (std::any_of(members.begin(), members.end(), [&](std::size_t i) { return drives(i); }))
         for (const std::size_t i : members) link(i);
   } while (changed);
+}
+
+}  // namespace assetlint::mjcf
+
+namespace assetlint::mjcf {
+
+std::vector<LoopClosure> loop_closures(const Couplings& couplings) {
+  std::vector<LoopClosure> closures;
+  for (const Loop& loop : couplings.loops) {
+    if (!loop.anchor || loop.body1 == "world" || loop.body1.empty()) continue;
+    closures.push_back({loop.body1, loop.body2 == "world" ? std::string() : loop.body2, *loop.anchor, loop.weld, loop.span,
+                        loop.label});
+  }
+  return closures;
 }
 
 }  // namespace assetlint::mjcf

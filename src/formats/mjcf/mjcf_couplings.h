@@ -12,6 +12,8 @@
 //     moves and a body it does not is a rope: the drive that winds it also lifts the other body.
 #include <tinyxml2.h>
 
+#include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,7 +50,10 @@ struct Loop {
   std::string body1, body2;
   Span span;
   std::string label;  // "the weld at line 403"
+  bool weld = false;
+  std::optional<Eigen::Vector3d> anchor;  // in body1's frame; unset when it cannot be placed
 };
+
 
 struct Couplings {
   FixedTendons fixed;                              // every named fixed tendon's joints
@@ -82,5 +87,8 @@ void note_coupled_loads(const Couplings& couplings, Asset& asset);
 // coupled only to one another (an oven's knobs and the valve each one turns) stay passive: no
 // actuator drags what they carry.
 void mark_linkages(const Couplings& couplings, Asset& asset);
+
+// The loops whose anchor is known, as the model's loop closures (the world written as "").
+std::vector<LoopClosure> loop_closures(const Couplings& couplings);
 
 }  // namespace assetlint::mjcf

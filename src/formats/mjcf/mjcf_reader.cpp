@@ -69,6 +69,7 @@ class Reader {
     report_removed_attributes(root);
     const Couplings couplings = read_couplings(sources_, defaults_, compiler_, sections, values_, result_.asset);
     const FixedTendons& tendons = couplings.fixed;
+    result_.asset.loops = loop_closures(couplings);
     std::vector<const XMLElement*> joint_equalities;
     // An actuator on a spatial tendon, a site or a body moves joints the model does not name
     // (a tendon-driven hand's finger joints): then no joint can be called passive.
@@ -78,6 +79,7 @@ class Reader {
     bool any_actuator = false;
     std::vector<DampRatio> damp_ratios;
     std::vector<Damper> dampers;
+    std::vector<const XMLElement*> on_tendons;
     for (const XMLElement* el : sections) {
       const std::string_view tag = el->Name();
       if (tag == "equality") {
@@ -85,7 +87,7 @@ class Reader {
           if (std::string_view(c->Name()) == "joint") joint_equalities.push_back(c);
       } else if (tag == "actuator") {
         for (const XMLElement* c : sources_.children(el)) {
-          read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset, damp_ratios, dampers);
+          read_actuator(c, defaults_, compiler_, tendons, values_, result_.asset, damp_ratios, dampers, on_tendons);
           any_actuator = any_actuator || default_kind(c->Name()) == "actuator";
           const char* tendon = c->Attribute("tendon");
           if ((tendon && !tendons.contains(tendon)) || c->Attribute("site") || c->Attribute("body") ||
@@ -106,6 +108,9 @@ class Reader {
     for (const XMLElement* el : joint_equalities) read_equality_joint(el);
     note_coupled_loads(couplings, result_.asset);
     result_.asset.index_names();  // after the equalities: they make the mimics
+    // A fixed tendon's drive sits on the joint its mimics follow: after the equalities.
+    for (const XMLElement* el : on_tendons)
+      read_tendon_actuator(el, defaults_, compiler_, tendons, qpos0_, values_, result_.asset, damp_ratios, dampers);
     // Once the whole tree is known: MuJoCo derives kv from dampratio and the inertia at qpos0.
     derive_dampratio_damping(damp_ratios, dampratio_rule_, values_, result_.asset);
     add_dampers(dampers, result_.asset);
@@ -452,6 +457,9 @@ class Reader {
       }
       if (angular && !limited) joint.type = JointType::Continuous;
     }
+    if (const Attr ref = lookup("ref"); ref && (angular || linear))
+      if (const auto v = values_.numbers(ref, "ref", 1))
+        qpos0_[joint.name.text] = to_model_units((*v)[0], linear ? Unit::Meter : compiler_.degree ? Unit::Degree : Unit::Radian);
     const bool rotational = !linear;
     joint.armature = values_.quantity(lookup("armature"), "armature", rotational ? Unit::KilogramMeter2 : Unit::Kilogram);
     joint.joint_damping = values_.quantity(lookup("damping"), "damping",
@@ -543,6 +551,7 @@ class Reader {
 
   MjcfSources sources_;
   ReadResult result_;
+  std::unordered_map<std::string, double> qpos0_;  // joints whose `ref` is written: their reference position
   Values values_;
   Compiler compiler_;
   Defaults defaults_;
