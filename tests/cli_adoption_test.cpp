@@ -280,3 +280,36 @@ TEST_CASE("adoption: a fixed value's trailing comment restating the old value is
   CHECK(read_file(dir.path() / "arm.urdf").find("lower=\"0\" upper=\"0.82\" effort=\"1\" velocity=\"1\"/> <!-- 47 deg -->") !=
         std::string::npos);
 }
+
+TEST_CASE("adoption: init writes a commented asset-lint.toml and never overwrites one", "[adoption][init]") {
+  TempDir dir;
+  const auto robot = dir.path() / "robot";
+  std::filesystem::create_directories(robot / "urdf");
+  write_file(robot / "urdf" / "robotiq_2f85.urdf",
+             read_file(assetlint::test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf"));
+  const auto init = run_cli({"init", "robot"}, dir.path());
+  CHECK(init.exit_code == 0);
+  CHECK(init.err == "asset-lint: wrote robot/asset-lint.toml for 1 asset (driven joint 'finger_joint')\n");
+  const std::string toml = read_file(robot / "asset-lint.toml");
+  CHECK(toml.find("\ndriven_joint = \"finger_joint\"   # its mimics: ") != std::string::npos);
+  CHECK(toml.find("\n# payload_kg = ") != std::string::npos);
+  CHECK(toml.find("\n# timesteps_per_second = 60 ") != std::string::npos);
+  // The file it writes is a configuration the check reads, and the spec is left to the user.
+  const auto shown = run_cli({"--show-settings", "urdf/robotiq_2f85.urdf"}, robot);
+  CHECK(shown.exit_code == 0);
+  CHECK(shown.out.find("# configuration: asset-lint.toml\n") != std::string::npos);
+  CHECK(shown.out.find("driven_joint = \"finger_joint\"") != std::string::npos);
+  CHECK(shown.out.find("# payload_kg is not set") != std::string::npos);
+  const auto again = run_cli({"init", "robot"}, dir.path());
+  CHECK(again.exit_code == 2);
+  CHECK(again.err.find("'robot/asset-lint.toml' exists; init does not overwrite it") != std::string::npos);
+  CHECK(read_file(robot / "asset-lint.toml") == toml);
+  // A USD stage's authored rate is taken as it is.
+  TempDir usd;
+  write_file(usd.path() / "guide.usda",
+             read_file(assetlint::test::fixtures_dir() / "fix" / "drive-natural-frequency" / "guide_99_48_per_deg.usda"));
+  CHECK(run_cli({"init"}, usd.path()).exit_code == 0);
+  CHECK(read_file(usd.path() / "asset-lint.toml").find("\ntimesteps_per_second = ") != std::string::npos);
+  TempDir empty;
+  CHECK(run_cli({"init"}, empty.path()).exit_code == 2);
+}

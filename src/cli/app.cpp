@@ -19,6 +19,7 @@
 #include "commands/compare_command.h"
 #include "commands/exit_status.h"
 #include "commands/fix.h"
+#include "commands/init.h"
 #include "commands/stdin.h"
 #include "commands/expand.h"
 #include "commands/simulate.h"
@@ -208,6 +209,7 @@ int run(const std::vector<std::string>& args, std::istream& in, std::ostream& ou
   if (command == "completion") return run_completion_command(args, out, err);
   if (command == "compare") return run_check_command(rest, in, out, err, out_is_terminal, true);
   if (command == "cat") return commands::run_cat(rest, out, err);
+  if (command == "init") return commands::run_init(rest, out, err);
   if (command == "tune") return commands::run_tune(rest, out, err);
   if (command == "verify") return commands::run_verify(rest, out, err);
   if (command == "expand") return commands::run_expand(rest, out, err);

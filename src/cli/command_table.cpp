@@ -16,6 +16,7 @@ const std::vector<CommandInfo>& command_table() {
       {"verify", "asset-lint verify FILE", "close, grasp, hold and lift a payload in MuJoCo against the spec (--plot)"},
       {"rule", "asset-lint rule RULE-ID", "print a rule's documentation and options (rule --all: every rule)"},
       {"cat", "asset-lint cat FILE.usd", "print a binary (crate) USD layer as USDA text, e.g. for git diff"},
+      {"init", "asset-lint init [DIR]", "write a commented asset-lint.toml for the assets found in DIR"},
       {"completion", "asset-lint completion SHELL", "print the completion script for bash, zsh or fish"},
   };
   return table;

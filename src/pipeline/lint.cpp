@@ -217,7 +217,9 @@ FileReport lint_file(const std::string& path, const Settings& settings, const Fi
   return lint_text(path, std::move(*text), settings, unconfined);
 }
 
-LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& unconfined) {
+namespace {
+
+LoadedAsset load(const std::string& path, const Settings& settings, const FileSystem& unconfined, bool expand_xacro) {
   const ConfinedFileSystem files(unconfined, config::read_policy(path, settings));
   LoadedAsset loaded;
   std::string error;
@@ -231,7 +233,7 @@ LoadedAsset load_asset(const std::string& path, const Settings& settings, const 
     loaded.error = std::move(*why);
     return loaded;
   }
-  if (kind == FileKind::Xacro) {
+  if (kind == FileKind::Xacro && !expand_xacro) {
     // The commands that read one model (tune, simulate, compare) show and write its file's
     // lines; a xacro file's model is its expansion's.
     loaded.error = fmt::format("'{}' is xacro source: expand it first (asset-lint expand {} -o robot.urdf)", path, path);
@@ -245,6 +247,16 @@ LoadedAsset load_asset(const std::string& path, const Settings& settings, const 
   loaded.read = read(path, kind, std::move(file), files, settings, Deadline::for_one_file());
   if (loaded.read.usable) config::apply_drive_settings(loaded.read.asset, settings);
   return loaded;
+}
+
+}  // namespace
+
+LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files) {
+  return load(path, settings, files, false);
+}
+
+LoadedAsset load_model(const std::string& path, const Settings& settings, const FileSystem& files) {
+  return load(path, settings, files, true);
 }
 
 std::optional<VariantRun> plan_variants(const std::string& path, const Settings& settings, const FileSystem& unconfined) {

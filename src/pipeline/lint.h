@@ -50,6 +50,9 @@ struct LoadedAsset {
   std::optional<std::string> error;
 };
 LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files = disk());
+// The same for a command that only reads the model's names and values (init): a .xacro file is
+// read as its expansion, whose spans point into the expanded text.
+LoadedAsset load_model(const std::string& path, const Settings& settings, const FileSystem& files = disk());
 // Lints files in parallel on `jobs` threads; the reports keep the order of `paths`.
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs);
 // The same, with each file's own settings (its asset-lint.toml).
