@@ -34,6 +34,22 @@ std::string weak_urdf() {
   return text;
 }
 
+const std::filesystem::path kDemoXacro =
+    test::fixtures_dir() / "xacro" / "demo_gripper_description" / "urdf" / "demo_gripper.urdf.xacro";
+
+// The guide's gripper as a ROS package's xacro file: its driven joint's effort from a property,
+// its velocity from an argument, a weak drive as a badly tuned asset would have.
+std::string guide_xacro() {
+  std::string text = read_file(test::fixtures_dir() / "robotiq_2f85" / "robotiq_2f85.urdf");
+  text = test::replace_once(text, "<robot name=\"robotiq_2f85_guide\">",
+                            "<robot name=\"robotiq_2f85_guide\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+                            "  <xacro:property name=\"finger_effort\" value=\"12\"/>\n"
+                            "  <xacro:arg name=\"finger_velocity\" default=\"1\"/>");
+  return test::replace_once(
+      text, R"(<limit lower="0" upper="0.820305" effort="24" velocity="2.9"/>)",
+      R"x(<limit lower="0" upper="0.820305" effort="${finger_effort}" velocity="$(arg finger_velocity)"/>)x");
+}
+
 }  // namespace
 
 TEST_CASE("toml edit: values rewritten in place, keys added after the table's last, comments kept", "[tune]") {
@@ -193,4 +209,61 @@ TEST_CASE("tune --apply on MJCF: the actuator's kp, kv and whole forcerange, no 
   CHECK(kept.err.find("asset-lint tune: note: kp of joint 'finger_joint' is written once, in default class 'servo', "
                       "which 2 elements use: not edited; give its actuator its own kp\n") != std::string::npos);
   CHECK(read_file(dir.path() / "shared.xml").find("<position kp=\"99.48\"/>") != std::string::npos);
+}
+
+TEST_CASE("tune reads a .xacro top file, with --xacro-arg, and shows values at their xacro lines", "[tune][xacro][cli]") {
+  const auto derived = run_cli(tune(kDemoXacro.string(), {"--joint", "left_finger_joint"}));
+  INFO(derived.out << derived.err);
+  REQUIRE(derived.exit_code == 0);
+  CHECK(derived.err.find("expand it first") == std::string::npos);
+  // The joint's limits are written once, in the macro file, whatever finger the macro makes.
+  CHECK(derived.out.find("demo_gripper_macro.xacro:19") != std::string::npos);
+  CHECK(derived.out.find("demo_gripper.urdf.xacro:") == std::string::npos);
+
+  const auto prefixed =
+      run_cli(tune(kDemoXacro.string(), {"--joint", "r_left_finger_joint", "--xacro-arg", "prefix:=r_"}));
+  INFO(prefixed.out << prefixed.err);
+  CHECK(prefixed.exit_code == 0);
+  CHECK(run_cli(tune(kDemoXacro.string(), {"--joint", "r_left_finger_joint"})).err.find(
+            "--joint names joint 'r_left_finger_joint', which the asset does not have") != std::string::npos);
+  CHECK(run_cli({"tune", kDemoXacro.string(), "--xacro-arg", "prefix"}).exit_code == 2);
+}
+
+TEST_CASE("tune --apply on xacro writes through the xacro source, an argument's value only with a note",
+          "[tune][xacro][cli]") {
+  test::TempDir dir;
+  const auto package = dir.path() / "guide_gripper";
+  std::filesystem::create_directories(package / "urdf");
+  write_file(package / "package.xml", "<?xml version=\"1.0\"?>\n<package format=\"2\">\n  <name>guide_gripper</name>\n"
+                                      "  <version>0.1.0</version>\n</package>\n");
+  write_file(package / "urdf" / "gripper.urdf.xacro", guide_xacro());
+  const std::string original = read_file(package / "urdf" / "gripper.urdf.xacro");
+  const auto diff = run_cli(tune("guide_gripper/urdf/gripper.urdf.xacro", {"--diff"}), dir.path());
+  INFO(diff.out << diff.err);
+  CHECK(diff.exit_code == 1);
+  CHECK(diff.out.find("-  <xacro:property name=\"finger_effort\" value=\"12\"/>\n"
+                      "+  <xacro:property name=\"finger_effort\" value=\"24\"/>\n") != std::string::npos);
+  CHECK(diff.out.find("+++ b/guide_gripper/urdf/asset-lint.toml") != std::string::npos);
+  CHECK(diff.err.find("asset-lint tune: note: <limit velocity> 1 → 2.9 not written: the value depends on the xacro "
+                      "argument finger_velocity; asset-lint does not rewrite arguments\n") != std::string::npos);
+  CHECK(read_file(package / "urdf" / "gripper.urdf.xacro") == original);
+
+  const auto applied = run_cli(tune("guide_gripper/urdf/gripper.urdf.xacro", {"--apply"}), dir.path());
+  INFO(applied.out << applied.err);
+  CHECK(applied.exit_code == 0);
+  CHECK(applied.err.find("asset-lint tune: guide_gripper/urdf/gripper.urdf.xacro: <limit effort> 12 → 24\n") !=
+        std::string::npos);
+  CHECK(read_file(package / "urdf" / "gripper.urdf.xacro") ==
+        test::replace_once(original, "value=\"12\"", "value=\"24\""));
+  CHECK(read_file(package / "urdf" / "asset-lint.toml").find("[drives.finger_joint]\nstiffness = ") != std::string::npos);
+  // The derivation shows the value where it is written: the property's line.
+  CHECK(applied.out.find("gripper.urdf.xacro:7") != std::string::npos);
+
+  // The argument given on the command line: the recommended velocity is what it is set to.
+  const auto again = run_cli(
+      tune("guide_gripper/urdf/gripper.urdf.xacro", {"--apply", "--xacro-arg", "finger_velocity:=2.9"}),
+      dir.path());
+  INFO(again.out << again.err);
+  CHECK(again.exit_code == 0);
+  CHECK(again.err == "asset-lint tune: nothing to change\n");
 }

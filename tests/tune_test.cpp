@@ -65,7 +65,7 @@ struct GuideUrdf {
     std::string error;
     const Joint* joint = commands::tune_joint(loaded.read.asset, settings, std::nullopt, error);
     REQUIRE(joint);
-    derivation = commands::derive(kUrdf, loaded.read.asset, settings, *joint);
+    derivation = commands::derive(kUrdf, loaded.read, settings, *joint);
   }
 };
 
@@ -134,7 +134,7 @@ TEST_CASE("tune: missing spec inputs name their key and flag, other steps still 
   std::string error;
   const Joint* joint = commands::tune_joint(loaded.read.asset, settings, std::nullopt, error);
   REQUIRE(joint);
-  const auto d = commands::derive(kUrdf, loaded.read.asset, settings, *joint);
+  const auto d = commands::derive(kUrdf, loaded.read, settings, *joint);
   const auto& grip = step(d, "grip_force");
   CHECK_FALSE(grip.result);
   REQUIRE(grip.missing.size() == 2);

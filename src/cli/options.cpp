@@ -76,7 +76,7 @@ void add_options(CLI::App& app, Options& o) {
       ->check(CLI::ExistingDirectory)
       ->allow_extra_args(false);
   app.add_option("--xacro-arg", o.xacro_args, "A xacro argument's value, name:=value (repeatable; wins over [xacro] args)")
-      ->check([](const std::string& s) { return s.find(":=") == std::string::npos ? "expected name:=value" : std::string(); });
+      ->check(commands::check_xacro_argument);
   app.add_option("--variant", o.variants,
                  "Check USD variant set SET in variant NAME only, SET=NAME (repeatable; wins over [usd] variants; "
                  "default: the stage's selection and every variant that carries physics)")
@@ -225,10 +225,7 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   overrides.timesteps_per_second = o.timesteps_per_second;
   if (o.position_iterations) overrides.position_iterations = static_cast<double>(*o.position_iterations);
   overrides.allow_outside_root = o.allow_outside_root;
-  for (const auto& arg : o.xacro_args) {
-    const auto at = arg.find(":=");
-    overrides.xacro_args.emplace_back(arg.substr(0, at), arg.substr(at + 2));
-  }
+  for (const auto& arg : o.xacro_args) overrides.xacro_args.push_back(commands::xacro_argument(arg));
   for (const auto& v : o.variants) overrides.variants.push_back(*commands::variant_choice(v));
   overrides.root = o.root;
   overrides.trees.push_back(std::filesystem::current_path().string());

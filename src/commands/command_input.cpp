@@ -55,6 +55,10 @@ void add_scope_options(CLI::App& app, CompositionScope& scope) {
                  "[usd] variants and the stage's own selection)")
       ->check(check_variant_choice)
       ->allow_extra_args(false);
+  app.add_option("--xacro-arg", scope.xacro_args,
+                 "A xacro argument's value, name:=value (repeatable; wins over [xacro] args)")
+      ->check(check_xacro_argument)
+      ->allow_extra_args(false);
 }
 
 std::optional<std::pair<std::string, std::string>> variant_choice(const std::string& text) {
@@ -65,6 +69,15 @@ std::optional<std::pair<std::string, std::string>> variant_choice(const std::str
 
 std::string check_variant_choice(const std::string& text) {
   return variant_choice(text) ? std::string() : "expected SET=NAME (a variant set and one of its variants)";
+}
+
+std::pair<std::string, std::string> xacro_argument(const std::string& text) {
+  const auto at = text.find(":=");
+  return {text.substr(0, at), text.substr(at + 2)};
+}
+
+std::string check_xacro_argument(const std::string& text) {
+  return text.find(":=") == std::string::npos ? "expected name:=value" : std::string();
 }
 
 CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
@@ -81,13 +94,14 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
   overrides.allow_outside_root = scope.allow_outside_root;
   add_package_paths(scope.package_paths);
   for (const auto& v : scope.variants) overrides.variants.push_back(*variant_choice(v));
+  for (const auto& arg : scope.xacro_args) overrides.xacro_args.push_back(xacro_argument(arg));
   config::SettingsResolver resolver(overrides, config);
   if (auto problem = resolver.prepare({path})) {
     result.error = problem->to_string();
     return result;
   }
   result.settings = resolver.for_file(path);
-  result.loaded = load_asset(path, result.settings);
+  result.loaded = load_model(path, result.settings);
   if (result.loaded.error) {
     result.error = *result.loaded.error;
     return result;
@@ -95,11 +109,13 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
   if (!result.loaded.read.usable) {
     const Asset& asset = result.loaded.read.asset;
     std::string first = "the reader could not build a model";
+    const WrittenAt& written_at = result.loaded.read.written_at;
     for (const Diagnostic& d : result.loaded.read.diagnostics) {
       if (d.severity != Severity::Error) continue;
-      first = d.span.valid() ? fmt::format("{}:{}:{}: {} [{}]", asset.source(d.span.file).path(), d.span.line,
-                                           d.span.column, d.message, d.rule)
-                             : d.message;
+      const Span span = written_at && d.span.valid() ? written_at(d.span) : d.span;
+      first = span.valid() ? fmt::format("{}:{}:{}: {} [{}]", asset.source(span.file).path(), span.line, span.column,
+                                         d.message, d.rule)
+                           : d.message;
       break;
     }
     result.error = fmt::format("cannot read {}: {}", path, first);

@@ -41,6 +41,7 @@ struct CompositionScope {
   bool allow_outside_root = false;
   std::vector<std::string> variants;  // --variant SET=NAME
   std::vector<std::string> package_paths;  // --package-path DIR: where ROS packages are found, and read
+  std::vector<std::string> xacro_args;     // --xacro-arg name:=value
 };
 CommandAsset load_command_asset(const std::string& path, const std::optional<std::string>& config,
                                 const CompositionScope& scope = {});
@@ -48,7 +49,7 @@ CommandAsset load_command_asset(const std::string& path, const std::optional<std
 // Writes a report file (--plot, --csv); false with `error` naming the path when it cannot.
 bool write_text_file(const std::string& path, const std::string& text, std::string& error);
 
-// Adds --root, --allow-outside-root and --variant to a command.
+// Adds --root, --allow-outside-root, --variant and --xacro-arg to a command.
 void add_scope_options(CLI::App& app, CompositionScope& scope);
 
 // The rate, iterations and solver a command steps at: the asset's (stage, then
@@ -58,6 +59,9 @@ void add_scope_options(CLI::App& app, CompositionScope& scope);
 std::optional<std::pair<std::string, std::string>> variant_choice(const std::string& text);
 // The check CLI11 runs on each --variant.
 std::string check_variant_choice(const std::string& text);
+// --xacro-arg name:=value, checked by CLI11 first; the check.
+std::pair<std::string, std::string> xacro_argument(const std::string& text);
+std::string check_xacro_argument(const std::string& text);
 
 physics::SimulationRate command_rate(const Asset& asset, const Settings& settings);
 

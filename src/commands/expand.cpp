@@ -21,11 +21,8 @@ namespace assetlint::commands {
 int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"asset-lint expand: prints the URDF a .xacro file expands to, as ROS's xacro does", "asset-lint expand"};
   std::string path, output;
-  std::vector<std::string> xacro_args;
   std::optional<std::string> config;
   app.add_option("file", path, "The .xacro file")->required();
-  app.add_option("--xacro-arg", xacro_args, "A xacro argument's value, name:=value (repeatable; wins over [xacro] args)")
-      ->check([](const std::string& s) { return s.find(":=") == std::string::npos ? "expected name:=value" : std::string(); });
   app.add_option("-o,--output", output, "Write the URDF to this file instead of standard output");
   app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the file)");
   CompositionScope scope;
@@ -38,10 +35,7 @@ int run_expand(const std::vector<std::string>& args, std::ostream& out, std::ost
   overrides.root = scope.root;
   overrides.allow_outside_root = scope.allow_outside_root;
   add_package_paths(scope.package_paths);
-  for (const auto& arg : xacro_args) {
-    const auto at = arg.find(":=");
-    overrides.xacro_args.emplace_back(arg.substr(0, at), arg.substr(at + 2));
-  }
+  for (const auto& arg : scope.xacro_args) overrides.xacro_args.push_back(xacro_argument(arg));
   config::SettingsResolver resolver(overrides, config);
   if (auto problem = resolver.prepare({path})) {
     err << "asset-lint expand: error: " << problem->to_string() << "\n";

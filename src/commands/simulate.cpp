@@ -39,7 +39,7 @@ int run_simulate(const std::vector<std::string>& args, std::ostream& out, std::o
   std::optional<std::string> joint_name, config, from_text, to_text, load_text, duration_text = std::string("1"), plot,
       csv, rate_text, iterations_text;
   bool from_open = false, to_closed = false;
-  app.add_option("asset", path, "The .urdf, .usda or MJCF .xml file")->required();
+  app.add_option("asset", path, "The .urdf, .xacro, .usda or MJCF .xml file")->required();
   app.add_option("--joint", joint_name, "The driven joint (default: [gripper] driven_joint, else the only driven joint)");
   auto* from = app.add_option("--from", from_text, "Start position: degrees (revolute) or metres (prismatic)");
   auto* open = app.add_flag("--from-open", from_open, "Start at the lower limit (the default)");

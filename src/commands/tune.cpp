@@ -48,7 +48,7 @@ int run_tune(const std::vector<std::string>& args, std::ostream& out, std::ostre
   std::string format = "text";
   bool apply = false, diff = false;
   std::vector<std::string> flag_text(std::size(kSpecFlags));
-  app.add_option("asset", path, "The .urdf, .usda or MJCF .xml file")->required();
+  app.add_option("asset", path, "The .urdf, .xacro, .usda or MJCF .xml file")->required();
   app.add_option("--joint", joint, "The driven joint (default: [gripper] driven_joint, else the only driven joint)");
   for (std::size_t i = 0; i < std::size(kSpecFlags); ++i) app.add_option(kSpecFlags[i].name, flag_text[i], kSpecFlags[i].help);
   app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the asset)");
@@ -88,14 +88,14 @@ int run_tune(const std::vector<std::string>& args, std::ostream& out, std::ostre
     err << fmt::format("asset-lint tune: error: {}: {}\n", path, error);
     return kExitError;
   }
-  const TuneDerivation derivation = derive(path, asset, settings, *tuned);
+  const TuneDerivation derivation = derive(path, input.loaded.read, settings, *tuned);
   if (diff || apply) {
     // --diff prints only the diff; --apply prints the derivation, then what it wrote.
     if (!diff) {
       if (format == "json") write_tune_json(out, derivation);
       else write_tune_text(out, derivation);
     }
-    return carry_out(plan_tune_apply(derivation, asset, settings, config), diff, out, err);
+    return carry_out(plan_tune_apply(derivation, input.loaded.read, settings, config), diff, out, err);
   }
   if (format == "json") write_tune_json(out, derivation);
   else write_tune_text(out, derivation);

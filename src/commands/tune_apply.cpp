@@ -37,9 +37,9 @@ bool same_number(const Quantity& q, const std::string& text) {
 
 class Planner {
  public:
-  Planner(const TuneDerivation& d, const Asset& asset, const Settings& settings,
+  Planner(const TuneDerivation& d, const ReadResult& read, const Settings& settings,
           const std::optional<std::string>& config_path)
-      : d_(d), asset_(asset), settings_(settings), config_path_(config_path), joint_(*d.joint) {
+      : d_(d), read_(read), asset_(read.asset), settings_(settings), config_path_(config_path), joint_(*d.joint) {
     scope_ = fix::default_scope(d.path);
   }
 
@@ -48,6 +48,7 @@ class Planner {
     else if (asset_.format == SourceFormat::Mjcf) mjcf();
     else usd();
     if (plan_.error) return std::move(plan_);
+    if (read_.relocate) through_xacro();
     for (auto& [file, edits] : edits_) {
       const SourceFile& source = asset_.source(file);
       if (!scope_(source.path())) {
@@ -71,6 +72,47 @@ class Planner {
   void insert(FileId file, std::size_t offset, std::string text, std::string change) {
     edits_[file].push_back(Edit{file, offset, 0, std::move(text)});
     changes_[file].push_back(std::move(change));
+  }
+
+  // The edits were made on a xacro file's expansion: each moves to the literal in the xacro
+  // source that wrote the value, as a finding's fix does, or is dropped with the reason.
+  void through_xacro() {
+    std::vector<Diagnostic> carriers;
+    std::vector<std::string> changes;
+    for (auto& [file, edits] : edits_)
+      for (std::size_t i = 0; i < edits.size(); ++i) {
+        const Edit& e = edits[i];
+        Diagnostic carrier;
+        carrier.span = Span{e.file, e.offset, e.length, 0, 0};
+        carrier.fix = Fix{changes_[file][i], Applicability::Safe, {e}};
+        carriers.push_back(std::move(carrier));
+        changes.push_back(changes_[file][i]);
+      }
+    const std::vector<std::shared_ptr<const SourceFile>> files = read_.relocate(carriers);
+    edits_.clear();
+    changes_.clear();
+    for (std::size_t i = 0; i < carriers.size(); ++i) {
+      const Diagnostic& d = carriers[i];
+      if (!d.fix) {
+        std::string why = "the xacro source does not write it as a literal";
+        for (const Note& n : d.notes)
+          if (n.message.starts_with("No fix through xacro: ")) why = n.message.substr(22);
+          else if (n.message.starts_with("The fix of this finding")) why = "another value rewrites the same literal";
+        if (why.ends_with(".")) why.pop_back();
+        plan_.notes.push_back(fmt::format("{} not written: {}", changes[i], why));
+        continue;
+      }
+      for (const Edit& e : d.fix->edits) {
+        const FileId in_asset = source_id(*files.at(e.file));
+        edits_[in_asset].push_back(Edit{in_asset, e.offset, e.length, e.replacement});
+      }
+      changes_[source_id(*files.at(d.fix->edits.front().file))].push_back(changes[i]);
+    }
+  }
+  FileId source_id(const SourceFile& file) const {
+    for (FileId id = 0; id < asset_.sources.size(); ++id)
+      if (asset_.sources[id].get() == &file) return id;
+    return kNoFile;
   }
 
   // A quantity literal rewritten, when the number differs.
@@ -268,6 +310,7 @@ class Planner {
   }
 
   const TuneDerivation& d_;
+  const ReadResult& read_;
   const Asset& asset_;
   const Settings& settings_;
   const std::optional<std::string>& config_path_;
@@ -286,9 +329,9 @@ std::string diff_label(const char* prefix, const std::string& path) {
 
 }  // namespace
 
-ApplyPlan plan_tune_apply(const TuneDerivation& derivation, const Asset& asset, const Settings& settings,
+ApplyPlan plan_tune_apply(const TuneDerivation& derivation, const ReadResult& read, const Settings& settings,
                           const std::optional<std::string>& config_path) {
-  return Planner(derivation, asset, settings, config_path).run();
+  return Planner(derivation, read, settings, config_path).run();
 }
 
 int carry_out(const ApplyPlan& plan, bool diff, std::ostream& out, std::ostream& err) {

@@ -26,7 +26,9 @@ struct ApplyPlan {
 };
 
 // What --apply would write. `config_path`: the asset-lint.toml named with --config, if any.
-ApplyPlan plan_tune_apply(const TuneDerivation& derivation, const Asset& asset, const Settings& settings,
+// A xacro file's expansion (read.relocate set) is written through its xacro source as --fix
+// writes it: only literals written there byte for byte, each note saying why not otherwise.
+ApplyPlan plan_tune_apply(const TuneDerivation& derivation, const ReadResult& read, const Settings& settings,
                           const std::optional<std::string>& config_path);
 
 // Prints the plan as a unified diff (`diff`) or writes it atomically. Returns 0 when

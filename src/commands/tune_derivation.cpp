@@ -17,8 +17,9 @@
 namespace assetlint::commands {
 namespace {
 
-std::string origin_of(const Asset& asset, const Span& span) {
-  if (!span.valid()) return "the asset (default)";
+std::string origin_of(const Asset& asset, const WrittenAt& written_at, const Span& model_span) {
+  if (!model_span.valid()) return "the asset (default)";
+  const Span span = written_at ? written_at(model_span) : model_span;
   const SourceFile& source = asset.source(span.file);
   if (source.binary()) return fmt::format("{} <{}>", source.path(), source.object_at(span.offset));
   return fmt::format("{}:{}", source.path(), span.line);
@@ -55,9 +56,10 @@ TuneResult result_in(double value, Unit unit, Unit usd_unit) {
 }
 
 // An asset quantity as an input, with the literal as written when its unit differs.
-TuneInput quantity_input(const Asset& asset, std::string symbol_text, std::string what, const Quantity& q) {
+TuneInput quantity_input(const Asset& asset, const WrittenAt& written_at, std::string symbol_text, std::string what,
+                         const Quantity& q) {
   TuneInput in{std::move(symbol_text), std::move(what), q.value, symbol(model_unit(q.unit)), {}, {}};
-  in.origin = q.span.valid() ? origin_of(asset, q.span) : "the asset's default";
+  in.origin = q.span.valid() ? origin_of(asset, written_at, q.span) : "the asset's default";
   if (converts(q.unit) && q.unit != Unit::UsdGearing)
     in.as_written = fmt::format("{} {}", format_number(q.authored, 6), unit_symbol(q.unit));
   // Values from [drives.<joint>] carry no span; Drive::origin names the table.
@@ -66,8 +68,9 @@ TuneInput quantity_input(const Asset& asset, std::string symbol_text, std::strin
 
 class Deriver {
  public:
-  Deriver(const std::string& path, const Asset& asset, const Settings& settings, const Joint& joint)
-      : asset_(asset), settings_(settings), joint_(joint), units_(gain_units(joint)) {
+  Deriver(const std::string& path, const Asset& asset, const WrittenAt& written_at, const Settings& settings,
+          const Joint& joint)
+      : asset_(asset), written_at_(written_at), settings_(settings), joint_(joint), units_(gain_units(joint)) {
     d_.path = path;
     d_.joint = &joint;
     for (const Joint* member : physics::coupled_joints(asset, joint))
@@ -172,7 +175,7 @@ class Deriver {
       if (const Quantity* current = current_max_force())
         total.notes.push_back(fmt::format("The asset has {} {} ({}).", format_number(current->value, 4),
                                           unit_symbol(units_.force),
-                                          current->span.valid() ? origin_of(asset_, current->span)
+                                          current->span.valid() ? origin_of(asset_, written_at_, current->span)
                                                                 : drive_settings_origin("max_force")));
     }
   }
@@ -195,8 +198,8 @@ class Deriver {
     TuneStep& velocity = add("max_joint_velocity", "max joint velocity", "ω = (upper − lower) / t");
     ok = true;
     if (joint_.lower && joint_.upper && std::isfinite(joint_.lower->value) && std::isfinite(joint_.upper->value)) {
-      velocity.inputs.push_back(quantity_input(asset_, "lower", "lower limit", *joint_.lower));
-      velocity.inputs.push_back(quantity_input(asset_, "upper", "upper limit", *joint_.upper));
+      velocity.inputs.push_back(quantity_input(asset_, written_at_, "lower", "lower limit", *joint_.lower));
+      velocity.inputs.push_back(quantity_input(asset_, written_at_, "upper", "upper limit", *joint_.upper));
     } else {
       velocity.missing.push_back(TuneMissing{"the joint's finite range", "the joint's lower and upper limits", ""});
       ok = false;
@@ -236,19 +239,19 @@ class Deriver {
       const double distance = physics::axis_distance(inertial, frame, via.axis);
       const double about_axis = physics::inertia_about_axis(inertial, frame, via.axis);
       const double m = inertial.mass.value;
-      const std::string where = origin_of(asset_, inertial.span.valid() ? inertial.span : link.span);
+      const std::string where = origin_of(asset_, written_at_, inertial.span.valid() ? inertial.span : link.span);
       step.inputs.push_back(TuneInput{"I_com", fmt::format("inertia of '{}' about its COM along the axis of '{}'",
                                                            link.name.text, via.name.text),
                                       about_axis - m * distance * distance, "kg·m²",
-                                      origin_of(asset_, inertial.inertia_span.valid() ? inertial.inertia_span : link.span),
+                                      origin_of(asset_, written_at_, inertial.inertia_span.valid() ? inertial.inertia_span : link.span),
                                       {}});
       step.inputs.push_back(TuneInput{"m", fmt::format("mass of '{}'", link.name.text), m, "kg",
-                                      origin_of(asset_, inertial.mass.span.valid() ? inertial.mass.span : link.span),
+                                      origin_of(asset_, written_at_, inertial.mass.span.valid() ? inertial.mass.span : link.span),
                                       {}});
       step.inputs.push_back(TuneInput{"d", "distance of its COM from the axis", distance, "m", where, {}});
     } else {
       step.inputs.push_back(TuneInput{"m", fmt::format("mass of '{}'", link.name.text), inertial.mass.value, "kg",
-                                      origin_of(asset_, inertial.mass.span), {}});
+                                      origin_of(asset_, written_at_, inertial.mass.span), {}});
     }
     if (joint_.armature)
       step.inputs.push_back(armature_input());
@@ -371,7 +374,7 @@ class Deriver {
   }
 
   TuneInput armature_input() const {
-    TuneInput in = quantity_input(asset_, "armature", "armature", *joint_.armature);
+    TuneInput in = quantity_input(asset_, written_at_, "armature", "armature", *joint_.armature);
     if (!joint_.armature->span.valid()) in.origin = drive_settings_origin("armature");
     return in;
   }
@@ -425,7 +428,7 @@ class Deriver {
     bool ok = true;
     const Drive* drive = joint_.drive ? &*joint_.drive : nullptr;
     if (drive && drive->stiffness && drive->stiffness->value > 0 && std::isfinite(drive->stiffness->value)) {
-      TuneInput k = quantity_input(asset_, "k", "current stiffness", *drive->stiffness);
+      TuneInput k = quantity_input(asset_, written_at_, "k", "current stiffness", *drive->stiffness);
       if (!drive->stiffness->span.valid()) k.origin = drive_settings_origin("stiffness");
       k.unit = symbol(units_.stiffness);
       step.inputs.push_back(std::move(k));
@@ -455,7 +458,7 @@ class Deriver {
       const TuneResult& r = *d_.steps[*i].result;
       k.inputs.push_back(TuneInput{"τ_max", "max drive force", r.value, r.unit, step_origin(*i), {}});
     } else if (const Quantity* current = current_max_force(); current && current->value > 0) {
-      TuneInput in = quantity_input(asset_, "τ_max", "max drive force (the asset's; no payload spec)", *current);
+      TuneInput in = quantity_input(asset_, written_at_, "τ_max", "max drive force (the asset's; no payload spec)", *current);
       if (!current->span.valid()) in.origin = drive_settings_origin("max_force");
       in.unit = symbol(units_.force);
       k.inputs.push_back(std::move(in));
@@ -562,6 +565,7 @@ class Deriver {
   }
 
   const Asset& asset_;
+  const WrittenAt& written_at_;
   const Settings& settings_;
   const Joint& joint_;
   GainUnits units_;
@@ -640,8 +644,8 @@ const Joint* tune_joint(const Asset& asset, const Settings& settings, const std:
   return nullptr;
 }
 
-TuneDerivation derive(const std::string& path, const Asset& asset, const Settings& settings, const Joint& joint) {
-  return Deriver(path, asset, settings, joint).run();
+TuneDerivation derive(const std::string& path, const ReadResult& read, const Settings& settings, const Joint& joint) {
+  return Deriver(path, read.asset, read.written_at, settings, joint).run();
 }
 
 }  // namespace assetlint::commands

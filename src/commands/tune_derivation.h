@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/settings.h"
+#include "formats/read_result.h"
 #include "model/asset.h"
 
 namespace assetlint::commands {
@@ -85,7 +86,8 @@ struct TuneDerivation {
 const Joint* tune_joint(const Asset& asset, const Settings& settings, const std::optional<std::string>& requested,
                         std::string& error, const char* joint_flag = "--joint");
 
-// Walks the guide's steps for `joint` (settings already carry the flags).
-TuneDerivation derive(const std::string& path, const Asset& asset, const Settings& settings, const Joint& joint);
+// Walks the guide's steps for `joint` (settings already carry the flags); values of a xacro
+// file's expansion are shown at their place in the xacro source.
+TuneDerivation derive(const std::string& path, const ReadResult& read, const Settings& settings, const Joint& joint);
 
 }  // namespace assetlint::commands

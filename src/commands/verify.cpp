@@ -16,6 +16,7 @@
 #include "commands/verify_report.h"
 #include "config/project_root.h"
 #include "formats/mesh/mesh_points.h"
+#include "formats/xacro/packages.h"
 #include "physics/gripper.h"
 #include "physics/sizing.h"
 #include "util/numbers.h"
@@ -25,15 +26,27 @@
 namespace assetlint::commands {
 namespace {
 
-std::string origin_of(const Asset& asset, const Quantity& q, const std::optional<Configured<double>>& configured) {
+std::string origin_of(const ReadResult& read, const Quantity& q, const std::optional<Configured<double>>& configured) {
   if (configured && !q.span.valid()) return configured->origin;
   if (!q.span.valid()) return "the asset's default";
-  return fmt::format("{}:{}", asset.source(q.span.file).path(), q.span.line);
+  const Span span = read.written_at ? read.written_at(q.span) : q.span;
+  return fmt::format("{}:{}", read.asset.source(span.file).path(), span.line);
 }
 
 std::string spec_line(const char* what, const std::optional<Configured<double>>& value, const char* unit) {
   return value ? fmt::format("{} {} {} ({})", what, format_number(value->value, 4), unit, value->origin)
                : fmt::format("{}: not set", what);
+}
+
+// A `package://pkg/rest` mesh the checked tree does not hold, found as `check` finds $(find pkg)
+// for a xacro file: the package holding the asset and those around it, then ROS_PACKAGE_PATH.
+std::optional<std::string> package_file(const std::string& filename, const std::string& asset, const std::string& root) {
+  if (!filename.starts_with("package://")) return std::nullopt;
+  const std::string rest = filename.substr(10);
+  const auto slash = rest.find('/');
+  const auto package = xacro::find_ros_package(rest.substr(0, slash), asset, root);
+  if (!package || slash == std::string::npos) return std::nullopt;
+  return (std::filesystem::path(*package) / rest.substr(slash + 1)).lexically_normal().string();
 }
 
 // Every scene of `plan` that can be judged, stepped and judged; the rest reported as not run.
@@ -62,7 +75,7 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   std::string path, format = "text", engine_name = "mujoco";
   std::optional<std::string> config, plot;
   bool fine_tune = false, apply = false;
-  app.add_option("asset", path, "The gripper: a URDF, USD (.usda, .usd, .usdc) or MJCF file")->required();
+  app.add_option("asset", path, "The gripper: a URDF, xacro, USD (.usda, .usd, .usdc) or MJCF file")->required();
   app.add_option("--engine", engine_name, "The engine that steps the scenes: mujoco (MuJoCo 2.2.2)")
       ->check(CLI::IsMember({"mujoco"}));
   app.add_option("--output-format", format, "text or json")->check(CLI::IsMember({"text", "json"}));
@@ -101,8 +114,9 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   const std::string root = config::checked_root(path, settings);
   const ReadPolicy reads = config::read_policy(path, settings);
   for (const std::string& filename : verify::collision_meshes(asset, link_names)) {
-    const auto file = mesh::resolve_mesh(filename, plan.asset_dir.empty() ? "." : plan.asset_dir,
-                                         root.empty() ? (plan.asset_dir.empty() ? "." : plan.asset_dir) : root, error);
+    auto file = mesh::resolve_mesh(filename, plan.asset_dir.empty() ? "." : plan.asset_dir,
+                                   root.empty() ? (plan.asset_dir.empty() ? "." : plan.asset_dir) : root, error);
+    if (!file) file = package_file(filename, path, root);
     if (!file) return fail(fmt::format("{}: {}", path, error));
     if (auto refused = reads.refusal(*file)) return fail(fmt::format("{}: mesh '{}' {}", path, filename, *refused));
     auto points = mesh::read_points(*file, error);
@@ -150,16 +164,16 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
       fmt::format("target delta {}° ({})", format_number(g.target_delta_deg.value, 4), g.target_delta_deg.origin),
       fmt::format("drive of '{}': stiffness {} {}/{} ({}), damping {} {}·s/{} ({}), max force {}, max velocity {}",
                   joint->name.text, format_number(plan.drive.stiffness, 4), force_unit, angular ? "rad" : "m",
-                  origin_of(asset, *drive->stiffness, table ? table->stiffness : std::nullopt),
+                  origin_of(input.loaded.read, *drive->stiffness, table ? table->stiffness : std::nullopt),
                   format_number(plan.drive.damping, 4), force_unit, angular ? "rad" : "m",
-                  drive->damping ? origin_of(asset, *drive->damping, table ? table->damping : std::nullopt)
+                  drive->damping ? origin_of(input.loaded.read, *drive->damping, table ? table->damping : std::nullopt)
                                  : std::string("none"),
                   plan.drive.max_force ? fmt::format("{} {} ({})", format_number(*plan.drive.max_force, 4), force_unit,
-                                                     origin_of(asset, *force, table ? table->max_force : std::nullopt))
+                                                     origin_of(input.loaded.read, *force, table ? table->max_force : std::nullopt))
                                        : std::string("unbounded"),
                   plan.drive.max_velocity
                       ? fmt::format("{} {}/s ({})", format_number(*plan.drive.max_velocity, 4), angular ? "rad" : "m",
-                                    origin_of(asset, *joint->velocity, table ? table->max_velocity : std::nullopt))
+                                    origin_of(input.loaded.read, *joint->velocity, table ? table->max_velocity : std::nullopt))
                       : std::string("unbounded")),
       fmt::format("step: {}; the engine steps h = {} s and samples every frame ({} s)", plan.timestep_origin,
                   format_number(plan.timestep, 4), format_number(plan.frame, 4)),
@@ -215,7 +229,7 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
     lowered.recommended.stiffness = report.fine_tune->lowest.stiffness;
     lowered.recommended.damping = report.fine_tune->lowest.damping;
     if (format == "text") out << "\n";
-    if (carry_out(plan_tune_apply(lowered, asset, settings, config), false, format == "text" ? out : err, err) ==
+    if (carry_out(plan_tune_apply(lowered, input.loaded.read, settings, config), false, format == "text" ? out : err, err) ==
         kExitError)
       return kExitError;
   }

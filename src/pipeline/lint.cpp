@@ -234,8 +234,7 @@ LoadedAsset load(const std::string& path, const Settings& settings, const FileSy
     return loaded;
   }
   if (kind == FileKind::Xacro && !expand_xacro) {
-    // The commands that read one model (tune, simulate, compare) show and write its file's
-    // lines; a xacro file's model is its expansion's.
+    // compare shows and rewrites its file's lines; a xacro file's model is its expansion's.
     loaded.error = fmt::format("'{}' is xacro source: expand it first (asset-lint expand {} -o robot.urdf)", path, path);
     return loaded;
   }

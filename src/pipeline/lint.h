@@ -42,7 +42,7 @@ FileReport lint_file(const std::string& path, const Settings& settings, const Fi
 FileReport lint_text(const std::string& path, std::string text, const Settings& settings,
                      const FileSystem& files = disk());
 // Reads one file into the model the rules check (the configuration's [drives] applied),
-// for commands that reason about one asset (tune, simulate). `error` when the file cannot
+// for commands that compare one asset's lines (compare). `error` when the file cannot
 // be read or is of an unsupported type; otherwise `read.usable` says whether the reader
 // could build the model (its diagnostics say why not).
 struct LoadedAsset {
@@ -50,8 +50,10 @@ struct LoadedAsset {
   std::optional<std::string> error;
 };
 LoadedAsset load_asset(const std::string& path, const Settings& settings, const FileSystem& files = disk());
-// The same for a command that only reads the model's names and values (init): a .xacro file is
-// read as its expansion, whose spans point into the expanded text.
+// The same for the commands that read one model's values (init, tune, simulate, verify): a
+// .xacro file is read as its expansion (its arguments and packages as the check reads them),
+// whose spans point into the expanded text; read.written_at maps them to the xacro source and
+// read.relocate moves edits there.
 LoadedAsset load_model(const std::string& path, const Settings& settings, const FileSystem& files = disk());
 // Lints files in parallel on `jobs` threads; the reports keep the order of `paths`.
 std::vector<FileReport> lint_files(const std::vector<std::string>& paths, const Settings& settings, unsigned jobs);

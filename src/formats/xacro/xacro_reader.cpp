@@ -67,6 +67,8 @@ class Relocator {
     return expansion_.files;
   }
 
+  Span written_at(const Span& span) const { return moved(span); }
+
  private:
   const Placement* attribute_at(std::size_t offset, std::size_t length) const {
     auto it = std::upper_bound(attributes_.begin(), attributes_.end(), offset,
@@ -255,6 +257,7 @@ ReadResult read_xacro(std::shared_ptr<const SourceFile> file, const FileSystem& 
   ReadResult result = urdf::read_urdf(text);
   for (auto& f : expanded.files) result.asset.sources.push_back(f);
   result.relocate = [relocator](std::vector<Diagnostic>& diagnostics) { return relocator->relocate(diagnostics); };
+  result.written_at = [relocator](const Span& span) { return relocator->written_at(span); };
   return result;
 }
 
