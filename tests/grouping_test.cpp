@@ -46,3 +46,33 @@ TEST_CASE("grouping: a different rule, severity or note keeps findings apart", "
 
 }  // namespace
 }  // namespace assetlint
+
+namespace assetlint {
+namespace {
+
+TEST_CASE("grouping: a xacro macro's call chain and places in notes do not keep findings apart", "[report][xacro]") {
+  Diagnostic left = finding("link 'left_outer_knuckle' moves but has no <inertial>",
+                            "the value is computed by '${prefix}${side}_outer_knuckle' in the xacro source", 6);
+  left.note("in macro 'outer_knuckle' called at robotiq_arg2f.xacro:36:5");
+  left.note("in macro 'finger_links' called at robotiq_arg2f_85_model_macro.xacro:198:5");
+  left.note("the value of property 'mass', defined at robotiq_arg2f.xacro:3:5, is used here");
+  Diagnostic right = left;
+  right.message = "link 'right_outer_knuckle' moves but has no <inertial>";
+  right.notes[2].message = "in macro 'finger_links' called at robotiq_arg2f_85_model_macro.xacro:199:5";
+  right.notes[3].message = "the value of property 'mass', defined at robotiq_arg2f.xacro:9:5, is used here";
+  CHECK(group_identical({left, right}).size() == 1);
+  // The finding whose fix travels with the first's (one xacro literal for both) stays with it.
+  Fix fix{"mirror the limits", Applicability::Unsafe, {}};
+  left.fix = fix;
+  right.note(left.span, "The fix of this finding rewrites the same xacro literal.");
+  CHECK(group_identical({left, right}).size() == 1);
+  // Other words in a note still keep them apart; numbers that are not places too.
+  right.notes[1].message = "the value is computed by '${x}' in the xacro source, twice";
+  CHECK(group_identical({left, right}).size() == 2);
+  Diagnostic heavier = left;
+  heavier.notes[3].message = "the value of property 'mass', defined at robotiq_arg2f.xacro:3:5, is 2 kg";
+  CHECK(group_identical({left, heavier}).size() == 2);
+}
+
+}  // namespace
+}  // namespace assetlint

@@ -74,23 +74,6 @@ std::string plural(std::size_t n, std::string_view word) {
   return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
 }
 
-// "  = the same on 23 more: 'palm' (31:17), 'thumb_base' (64:17), …": the places of the
-// findings a printed one stands for.
-std::string same_on_more(const FileReport& report, const FindingGroup& group) {
-  const std::vector<Diagnostic>& diagnostics = report.diagnostics;
-  constexpr std::size_t kListed = 6;
-  std::string places;
-  for (std::size_t k = 0; k < group.others.size() && k < kListed; ++k) {
-    const Diagnostic& d = diagnostics[group.others[k]];
-    const std::string name = first_quoted(d.message);
-    const auto object = object_path(report, d.span);
-    const std::string at = object ? "<" + *object + ">" : fmt::format("{}:{}", d.span.line, d.span.column);
-    places += fmt::format("{}{}{}{}", k ? ", " : "", name.empty() ? "" : "'" + name + "' (", at, name.empty() ? "" : ")");
-  }
-  if (group.others.size() > kListed) places += ", …";
-  return fmt::format("and the same on {} more: {}", group.others.size(), places);
-}
-
 }  // namespace
 
 void write_text(std::ostream& out, const std::vector<FileReport>& reports, const TextOptions& options,
