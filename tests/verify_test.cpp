@@ -165,9 +165,9 @@ TEST_CASE("verify: --plot writes an SVG that rsvg-convert renders", "[verify]") 
   const auto r = gripper.run({"--plot", "verify.svg"});
   REQUIRE(r.exit_code == 0);
   const std::string svg = read_file(gripper.dir.path() / "verify.svg");
-  CHECK(svg.find("finger opening (mm)") != std::string::npos);
-  CHECK(svg.find("object height (mm)") != std::string::npos);
-  CHECK(svg.find("penetration (mm)") != std::string::npos);
+  CHECK(svg.find("close: finger opening (mm)") != std::string::npos);
+  CHECK(svg.find("grasp: penetration (mm)") != std::string::npos);
+  CHECK(svg.find("hold: slip since gravity on (mm)") != std::string::npos);
   if (std::system("command -v rsvg-convert >/dev/null 2>&1") != 0) {
     if (assetlint::test::in_ci()) FAIL("rsvg-convert missing under CI=true (scripts/bootstrap.sh installs librsvg2-bin)");
     WARN("rsvg-convert not installed (Debian librsvg2-bin, scripts/bootstrap.sh): SVG rendering not checked");

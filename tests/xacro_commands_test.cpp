@@ -46,6 +46,9 @@ TEST_CASE("xacro: tune and verify on the ros-industrial 2F-85 package's top xacr
                               dir.path());
   INFO(verify.out << verify.err);
   REQUIRE(verify.exit_code != 2);  // the meshes' package:// resolved, the scenes ran
+  // A run of several seconds says which scene it is at, on standard error.
+  CHECK(verify.err.find(" of 8 (hold, gravity on, ") != std::string::npos);
+  CHECK(verify.err.find(" engine steps so far, ") != std::string::npos);
   const auto report = nlohmann::json::parse(verify.out);
   std::size_t ran = 0;
   for (const auto& scene : report["scenes"]) ran += scene["ran"].get<bool>() ? 1 : 0;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -38,6 +39,29 @@ std::string spec_line(const char* what, const std::optional<Configured<double>>&
                : fmt::format("{}: not set", what);
 }
 
+// Lines on standard error once a run has taken more than a second: which scene of how many
+// starts, and the engine steps so far, so that a long verification is seen to move.
+class Progress {
+ public:
+  explicit Progress(std::ostream& err) : err_(err), start_(std::chrono::steady_clock::now()) {}
+  void scene_starts(std::size_t index, std::size_t count, const verify::SceneSpec& scene, long steps) {
+    if (elapsed() < 1.0) return;
+    err_ << fmt::format("asset-lint verify: {}scene {} of {} ({}), {} engine steps so far, {} s\n", run_, index + 1,
+                        count, scene.name, steps, format_number(elapsed(), 2));
+    err_.flush();
+  }
+  // Names the fine-tuning's runs from here on.
+  void fine_tuning_run(std::size_t run) { run_ = fmt::format("fine-tuning run {}: ", run); }
+
+ private:
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  std::ostream& err_;
+  std::chrono::steady_clock::time_point start_;
+  std::string run_;
+};
+
 // A `package://pkg/rest` mesh the checked tree does not hold, found as `check` finds $(find pkg)
 // for a xacro file: the package holding the asset and those around it, then ROS_PACKAGE_PATH.
 std::optional<std::string> package_file(const std::string& filename, const std::string& asset, const std::string& root) {
@@ -51,13 +75,15 @@ std::optional<std::string> package_file(const std::string& filename, const std::
 
 // Every scene of `plan` that can be judged, stepped and judged; the rest reported as not run.
 std::optional<std::vector<verify::SceneResult>> run_scenes(verify::Engine& engine, const verify::VerifyPlan& plan,
-                                                           const Settings& settings, long& steps, std::string& error) {
+                                                           const Settings& settings, long& steps, std::string& error,
+                                                           Progress& progress) {
   std::vector<verify::SceneResult> results;
   for (const verify::SceneSpec& scene : plan.scenes) {
     if (!scene.not_run.empty()) {
       results.push_back(verify::not_run(scene));
       continue;
     }
+    progress.scene_starts(results.size(), plan.scenes.size(), scene, steps);
     auto trajectory = engine.run(plan, scene, error);
     if (!trajectory) return std::nullopt;
     steps += trajectory->steps;
@@ -194,16 +220,23 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
 
   backends::mujoco::MujocoEngine engine;
   report.engine = engine.info(plan);
-  auto results = run_scenes(engine, plan, settings, report.steps, error);
+  Progress progress(err);
+  auto results = run_scenes(engine, plan, settings, report.steps, error, progress);
   if (!results) return fail(fmt::format("{}: {}", path, error));
   report.scenes = std::move(*results);
   if (fine_tune) {
     // A drive passes when every scene that can be judged passes (scenes not run are not judged).
+    // Today's drive is the run above: when it fails, the fine-tuning stops there and says what
+    // to change first.
     bool failed = false;
+    const bool baseline_passed =
+        std::none_of(report.scenes.begin(), report.scenes.end(), [](const auto& s) { return s.ran && !s.passed; });
+    std::size_t run = 1;
     const auto passes = [&](const verify::DriveSpec& drive) {
       verify::VerifyPlan trial = plan;
       trial.drive = drive;
-      auto scenes = run_scenes(engine, trial, settings, report.steps, error);
+      progress.fine_tuning_run(++run);
+      auto scenes = run_scenes(engine, trial, settings, report.steps, error, progress);
       if (!scenes) {
         failed = true;
         return false;
@@ -212,14 +245,18 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
         if (s.ran && !s.passed) return false;
       return true;
     };
-    report.fine_tune = verify::fine_tune(plan.drive, passes);
+    report.fine_tune = baseline_passed ? verify::fine_tune(plan.drive, passes)
+                                       : verify::failing_baseline(plan.drive, report.scenes);
     if (failed) return fail(fmt::format("{}: {}", path, error));
     if (std::any_of(report.scenes.begin(), report.scenes.end(), [](const auto& s) { return !s.ran; }))
       report.fine_tune->notes.push_back("scenes not run are not judged by the fine-tuning");
   }
   if (format == "json") write_verify_json(out, report);
   else write_verify_text(out, report, settings.verify);
-  if (plot && !write_text_file(*plot, verify_svg(report, plan, settings.verify), error)) return fail(error);
+  if (plot) {
+    if (!write_text_file(*plot, verify_svg(report, plan, settings.verify), error)) return fail(error);
+    err << fmt::format("asset-lint verify: wrote the plot to {}\n", *plot);
+  }
   if (apply && report.fine_tune && report.fine_tune->baseline_passed) {
     TuneDerivation lowered;
     lowered.path = path;

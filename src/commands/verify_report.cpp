@@ -54,6 +54,11 @@ std::vector<std::string> fine_tune_lines(const VerifyReport& report) {
   std::vector<std::string> lines;
   const char* force = report.angular ? "N·m" : "N";
   const char* per = report.angular ? "rad" : "m";
+  if (!f.baseline_passed) {
+    lines.push_back("Fine-tuning: not run, today's drive must pass every scene first.");
+    for (const auto& note : f.notes) lines.push_back("  " + note);
+    return lines;
+  }
   lines.push_back(fmt::format("Fine-tuning ({} runs of every scene): can the max force and the stiffness be lowered "
                               "while every scene still passes?",
                               f.trials.size()));
@@ -182,45 +187,91 @@ void write_verify_json(std::ostream& out, const VerifyReport& report) {
   out << doc.dump(2) << "\n";
 }
 
+namespace {
+
+// A scene's line in its panel's legend: its name and verdict, with what its first failure is
+// about (the words before its numbers: "close time", "grip force", "slip", "diverged").
+std::string legend(const verify::SceneResult& r) {
+  if (r.passed) return r.spec.name + ": pass";
+  const std::string& failure = r.failures.front();
+  std::string about = failure.substr(0, failure.find_first_of("0123456789:"));
+  while (!about.empty() && about.back() == ' ') about.pop_back();
+  return r.spec.name + ": FAIL (" + about + ")";
+}
+
+// The panel a scene kind is judged in: what the verdict rests on, over time.
+ChartPanel kind_panel(verify::SceneKind kind, const VerifySettings& limits) {
+  ChartPanel panel;
+  switch (kind) {
+    case verify::SceneKind::Close: panel.y_label = "close: finger opening (mm)"; break;
+    case verify::SceneKind::Grasp:
+      panel.y_label = "grasp: penetration (mm)";
+      panel.markers.push_back({"peak penetration limit", "#d62728", limits.peak_penetration_m.value * 1000});
+      panel.markers.push_back({"steady penetration limit", "#ff7f0e", limits.steady_penetration_m.value * 1000});
+      break;
+    case verify::SceneKind::Hold:
+      panel.y_label = "hold: slip since gravity on (mm)";
+      panel.markers.push_back({"slip limit", "#d62728", limits.slip_m.value * 1000});
+      break;
+    case verify::SceneKind::Lift:
+      panel.y_label = "lift: slip since the lift starts (mm)";
+      panel.markers.push_back({"slip limit", "#d62728", limits.slip_m.value * 1000});
+      break;
+  }
+  return panel;
+}
+
+}  // namespace
+
 std::string verify_svg(const VerifyReport& report, const verify::VerifyPlan& plan, const VerifySettings& limits) {
-  static const char* kColors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                                  "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  static const char* kColors[] = {"#1f77b4", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
   Chart chart;
   chart.title = fmt::format("asset-lint verify: '{}' of {} in {} {}", report.joint, report.path, report.engine.name,
                             report.engine.version);
   chart.x_label = "time (s)";
   chart.x_max = 0;
-  ChartPanel opening{"finger opening (mm)", {}, {}, {}, {}, {}, {}};
-  ChartPanel height{"object height (mm)", {}, {}, {}, {}, {}, {}};
-  ChartPanel penetration{"penetration (mm)", {}, {}, {}, {}, {}, {}};
-  penetration.markers.push_back({"peak limit", "#d62728", limits.peak_penetration_m.value * 1000});
-  penetration.markers.push_back({"steady limit", "#ff7f0e", limits.steady_penetration_m.value * 1000});
-  std::size_t index = 0;
+  // One panel per kind of scene, in the order the scenes run, so that no scene's line hides
+  // another kind's; each shows the quantity its verdict rests on, with the thresholds.
+  std::vector<std::pair<verify::SceneKind, ChartPanel>> panels;
+  const auto panel_of = [&](verify::SceneKind kind) -> ChartPanel& {
+    for (auto& [k, p] : panels)
+      if (k == kind) return p;
+    panels.emplace_back(kind, kind_panel(kind, limits));
+    return panels.back().second;
+  };
   for (const verify::SceneResult& r : report.scenes) {
     if (!r.ran || r.trajectory.samples.empty()) continue;
-    const std::string color = kColors[index++ % 10];
-    ChartSeries gap{r.spec.name, color, {}, {}, false}, lift{r.spec.name, color, {}, {}, false},
-        depth{r.spec.name, color, {}, {}, false};
-    const auto& first = r.trajectory.samples.front();
+    ChartPanel& panel = panel_of(r.spec.kind);
+    // A failing scene is drawn dashed; its legend says which threshold it missed.
+    ChartSeries line{legend(r), kColors[panel.series.size() % std::size(kColors)], {}, {}, !r.passed};
+    std::optional<Eigen::Vector3d> judged_start;
     for (const verify::Sample& s : r.trajectory.samples) {
-      std::map<std::string, Eigen::Isometry3d, std::less<>> poses{{plan.layout.pads[0], s.pads[0]},
-                                                                    {plan.layout.pads[1], s.pads[1]}};
-      gap.x.push_back(s.t);
-      gap.y.push_back(plan.layout.gap(*plan.asset, poses, plan.meshes) * 1000);
-      if (r.spec.object) {
-        lift.x.push_back(s.t);
-        lift.y.push_back(-(s.object - first.object).dot(plan.layout.approach) * 1000);
-        depth.x.push_back(s.t);
-        depth.y.push_back(s.penetration * 1000);
+      if (r.spec.kind == verify::SceneKind::Close) {
+        std::map<std::string, Eigen::Isometry3d, std::less<>> poses{{plan.layout.pads[0], s.pads[0]},
+                                                                      {plan.layout.pads[1], s.pads[1]}};
+        line.x.push_back(s.t);
+        line.y.push_back(plan.layout.gap(*plan.asset, poses, plan.meshes) * 1000);
+      } else if (r.spec.kind == verify::SceneKind::Grasp) {
+        line.x.push_back(s.t);
+        line.y.push_back(s.penetration * 1000);
+      } else if (s.t >= r.spec.judged_from - 1e-12) {
+        const Eigen::Vector3d relative = s.object - 0.5 * (s.pads[0].translation() + s.pads[1].translation());
+        if (!judged_start) judged_start = relative;
+        line.x.push_back(s.t);
+        line.y.push_back((relative - *judged_start).norm() * 1000);
       }
     }
     chart.x_max = std::max(chart.x_max, r.trajectory.samples.back().t);
-    opening.series.push_back(std::move(gap));
-    if (!lift.x.empty()) height.series.push_back(std::move(lift));
-    if (!depth.x.empty()) penetration.series.push_back(std::move(depth));
+    if (r.spec.kind == verify::SceneKind::Close && r.metrics.spec_close_time_s && panel.bands.empty()) {
+      const double spec = *r.metrics.spec_close_time_s;
+      panel.bands.push_back({spec * (1 - limits.close_time_under.value), spec * (1 + limits.close_time_over.value),
+                             "#2ca02c"});
+      panel.band_label = "close time the spec allows";
+    }
+    panel.series.push_back(std::move(line));
   }
   if (chart.x_max <= 0) chart.x_max = 1;
-  chart.panels = {opening, height, penetration};
+  for (auto& [kind, panel] : panels) chart.panels.push_back(std::move(panel));
   return render_svg(chart);
 }
 

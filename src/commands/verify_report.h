@@ -25,7 +25,8 @@ struct VerifyReport {
 
 void write_verify_text(std::ostream& out, const VerifyReport& report, const VerifySettings& limits);
 void write_verify_json(std::ostream& out, const VerifyReport& report);
-// Finger opening, object height and penetration over time, one panel each, every scene a line.
+// One panel per kind of scene (close: finger opening; grasp: penetration; hold and lift: slip),
+// every scene a line labelled with its verdict (dashed when it fails), the thresholds marked.
 std::string verify_svg(const VerifyReport& report, const verify::VerifyPlan& plan, const VerifySettings& limits);
 
 }  // namespace assetlint::commands

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "verify/metrics.h"
 #include "verify/scene.h"
 
 namespace assetlint::verify {
@@ -24,8 +25,13 @@ struct FineTuneResult {
   std::vector<std::string> notes;     // what could not be lowered, and why
 };
 
-// Bisection stops when the bracket is narrower than `tolerance` × today's value.
+// Bisection stops when the bracket is narrower than `tolerance` × today's value. Today's drive
+// has passed every scene already (the verification's own run): it is not run again.
 FineTuneResult fine_tune(const DriveSpec& today, const std::function<bool(const DriveSpec&)>& passes,
                          double tolerance = 0.02);
+
+// The answer when today's drive fails a scene (`scenes`, the verification's run): nothing is
+// lowered, and the notes say which scene fails first and which value of the drive to change.
+FineTuneResult failing_baseline(const DriveSpec& today, const std::vector<SceneResult>& scenes);
 
 }  // namespace assetlint::verify
