@@ -6,6 +6,8 @@ namespace assetlint::rules {
 
 const Rule& structure_undefined_link();
 const Rule& structure_mimic_reference();
+const Rule& structure_joint_axis();
+const Rule& structure_multiple_parents();
 const Rule& limits_inverted();
 const Rule& limits_ambiguous();
 const Rule& units_angle_degrees();
@@ -23,5 +25,6 @@ const Rule& armature_excessive();
 const Rule& mimic_copied_drive_gains();
 const Rule& mimic_drive_conflict();
 const Rule& joint_max_velocity();
+const Rule& grasp_slip();
 
 }  // namespace assetlint::rules

@@ -12,6 +12,8 @@ const std::vector<const Rule*>& checks() {
   static const std::vector<const Rule*> list{
       &structure_undefined_link(),
       &structure_mimic_reference(),
+      &structure_joint_axis(),
+      &structure_multiple_parents(),
       &limits_inverted(),
       &limits_ambiguous(),
       &units_angle_degrees(),
@@ -29,6 +31,7 @@ const std::vector<const Rule*>& checks() {
       &mimic_copied_drive_gains(),
       &mimic_drive_conflict(),
       &joint_max_velocity(),
+      &grasp_slip(),
   };
   return list;
 }

@@ -297,18 +297,20 @@ TEST_CASE("fix: every fixtures/fix case fixes to exactly its .fixed bytes", "[fi
     CHECK(actual == test::read_file(expected_path));
   }
   CHECK(rules_covered == std::set<std::string>{"drive-damping-ratio", "drive-max-force", "drive-natural-frequency",
-                                              "joint-max-velocity", "limits-inverted", "mimic-copied-drive-gains",
-                                              "mimic-limit-conflict", "mimic-max-velocity", "structure-undefined-link",
-                                              "units-angle-degrees", "units-velocity-implausible",
+                                              "grasp-slip", "joint-max-velocity", "limits-inverted", "mimic-copied-drive-gains",
+                                              "mimic-limit-conflict", "mimic-max-velocity", "structure-joint-axis",
+                                              "structure-undefined-link", "units-angle-degrees", "units-velocity-implausible",
                                               "unused-suppression"});
   // Every fixable rule in each format where it has something to edit. URDF has no drive
   // gains (they come from asset-lint.toml, which fixes never edit) and no mimic compliance;
   // USD angles are always degrees, so there is no degree guessing to fix.
-  const std::set<std::string> both{".urdf", ".usda"}, usda{".usda"}, urdf{".urdf"}, usda_mjcf{".usda", ".xml"};
+  const std::set<std::string> both{".urdf", ".usda"}, usda{".usda"}, urdf{".urdf"}, usda_mjcf{".usda", ".xml"},
+      mjcf{".xml"};
   const std::map<std::string, std::set<std::string>> want{
       {"drive-damping-ratio", usda_mjcf}, {"drive-max-force", both},         {"drive-natural-frequency", usda},
       {"joint-max-velocity", both},      {"limits-inverted", both},         {"mimic-copied-drive-gains", usda},
       {"mimic-limit-conflict", both},    {"mimic-max-velocity", both},      {"structure-undefined-link", urdf}, {"units-angle-degrees", urdf},
+      {"grasp-slip", mjcf},              {"structure-joint-axis", urdf},
       {"units-velocity-implausible", both}, {"unused-suppression", both}};
   CHECK(formats_covered == want);
 }

@@ -221,6 +221,14 @@ struct Scene {
   Span solver_span;
   std::string integrator;            // MJCF <option integrator> keyword; empty = MuJoCo's default (Euler)
   Span integrator_span;
+  // MJCF <option> contact settings as written; empty / unset = MuJoCo's defaults
+  // (cone pyramidal, impratio 1, noslip_iterations 0).
+  std::string cone;
+  Span cone_span;
+  std::optional<double> impratio;
+  Span impratio_span;
+  std::optional<double> noslip_iterations;
+  Span noslip_span;
 };
 
 // A constraint that closes a kinematic loop between two links of the robot (MJCF

@@ -178,9 +178,26 @@ class Reader {
           scene.integrator_span = span;
         }
       }
+      read_contact_options(el, scene);
     }
     if (!scene.timesteps_per_second)
       scene.timesteps_per_second = Quantity::unauthored(to_model_units(kDefaultTimestep, Unit::SecondsPerStep), Unit::SecondsPerStep);
+  }
+
+  // cone, impratio and noslip_iterations: what a squeezed object's friction depends on.
+  void read_contact_options(const XMLElement* el, Scene& scene) {
+    if (const char* cone = el->Attribute("cone")) {
+      scene.cone = std::string(trim(cone));
+      scene.cone_span = values_.value_span(own(el, "cone"), "cone");
+    }
+    if (auto r = values_.numbers(own(el, "impratio"), "impratio", 1)) {
+      scene.impratio = (*r)[0];
+      scene.impratio_span = values_.value_span(own(el, "impratio"), "impratio");
+    }
+    if (auto n = values_.numbers(own(el, "noslip_iterations"), "noslip_iterations", 1)) {
+      scene.noslip_iterations = (*n)[0];
+      scene.noslip_span = values_.value_span(own(el, "noslip_iterations"), "noslip_iterations");
+    }
   }
 
   // The class an element inside a body takes its defaults from.
