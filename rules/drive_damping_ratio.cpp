@@ -1,8 +1,12 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "physics/servo_step.h"
+#include "physics/tendon_lag.h"
 #include "rules/all_rules.h"
 #include "rules/drive_support.h"
 #include "rules/support.h"
@@ -10,6 +14,26 @@
 
 namespace assetlint::rules {
 namespace {
+
+// A servo on a fixed tendon of several joints drives the tendon's length, not any one joint: the
+// length follows its target with the tendon's time constant, whatever one joint's own ratio.
+// Nothing when the joint is not on such a tendon, or a joint of it follows another by mimic (the
+// tendon's coordinate is then not the simple sum the formula assumes).
+std::optional<double> tendon_lag(const Asset& asset, const Joint& joint, double stiffness, double damping) {
+  if (!joint.transmission || joint.transmission->shares.size() < 2) return std::nullopt;
+  const double ratio = joint.transmission->ratio;
+  if (!(ratio > 0)) return std::nullopt;
+  std::vector<physics::TendonJointDamper> joints;
+  for (const TendonShare& share : joint.transmission->shares) {
+    const Joint* member = asset.find_joint(share.joint);
+    if (!member || member->is_mimic()) return std::nullopt;
+    joints.push_back({share.coef, member->joint_damping ? member->joint_damping->value : 0.0});
+  }
+  // The drive's damping holds the servo's kv through ratio² and the joint's own damping.
+  const double own = joint.joint_damping ? joint.joint_damping->value : 0.0;
+  const double kv = std::max(0.0, damping - own) / (ratio * ratio);
+  return physics::tendon_time_constant(stiffness / (ratio * ratio), kv, joints);
+}
 
 // PHYSICS.md §2: dr = d / (2·sqrt(k·I)); 1 is critical damping, the guide's starting
 // point. Far below it the joint rings; far above it the joint crawls. I is the drive's judged
@@ -47,8 +71,12 @@ class DriveDampingRatio final : public Rule {
       const bool load_left_out = joint.hidden_load && (!below || !joint.hidden_load->rope);
       // Far above critical the drive is a first-order lag: "sluggish" is a claim about how long
       // the joint takes to follow, and a short time constant refutes it.
+      const std::optional<double> tendon_time = below ? std::nullopt : tendon_lag(asset, joint, driven->stiffness, driven->damping);
+      // The tendon's verdict is one, given once: on the tendon's first joint.
+      if (tendon_time && joint.transmission->shares.front().joint != joint.name.text) continue;
       const double time_constant =
-          1.0 / physics::slowest_decay_rate(physics::Servo{inertia, driven->stiffness, 0.0, driven->damping});
+          tendon_time ? *tendon_time
+                      : 1.0 / physics::slowest_decay_rate(physics::Servo{inertia, driven->stiffness, 0.0, driven->damping});
       const bool follows_quickly = !below && !steadies_stiff_spring && !load_left_out && time_constant <= max_time_constant;
       // A joint that turns without limits (a wheel) with damping far above critical is driven by
       // velocity: the small stiffness only nudges it, and nobody asks it to reach a position.
@@ -92,9 +120,16 @@ class DriveDampingRatio final : public Rule {
           : velocity_driven
               ? fmt::format("drive of {}: damping ratio {} on a joint without limits: a velocity drive",
                             short_name(joint), format_number(ratio, 3))
+          : follows_quickly && tendon_time
+              ? fmt::format("drive of {}: damping ratio {} is above {}, but its {} follows its target within {} s",
+                            short_name(joint), format_number(ratio, 3), format_number(high), joint.transmission->tendon,
+                            format_number(time_constant, 2))
           : follows_quickly
               ? fmt::format("drive of {}: damping ratio {} is above {}, but the joint follows its target within {} s",
                             short_name(joint), format_number(ratio, 3), format_number(high), format_number(time_constant, 2))
+          : tendon_time
+              ? fmt::format("drive of {}: damping ratio {} is above {}: its {} follows its target sluggishly",
+                            short_name(joint), format_number(ratio, 3), format_number(high), joint.transmission->tendon)
               : fmt::format("drive of {}: damping ratio {} is {} {}: the joint {}", short_name(joint),
                                       format_number(ratio, 3), below ? "below" : "above", format_number(below ? low : high),
                                       below ? "oscillates around its target" : "moves sluggishly"));
@@ -105,7 +140,17 @@ class DriveDampingRatio final : public Rule {
       if (!drive.damping_origin.empty()) d.note(drive.damping_origin + ".");
       if (!drive.damping_other_release.empty()) d.note(drive.damping_other_release + ".");
       if (!driven->acceleration()) d.note(fmt::format("Inertias: {}.", driven->inertias_text()));
-      if (!below && !steadies_stiff_spring && !load_left_out && !velocity_driven)
+      if (tendon_time && !steadies_stiff_spring && !load_left_out && !velocity_driven)
+        d.note(joint.transmission->span,
+               fmt::format("{} pulls {}, which spans {} joints: the servo drives the tendon's length, and far above "
+                           "critical each joint moves at cᵢ·F/dᵢ, so the joints' dampers act on the tendon as one "
+                           "damper of 1/Σ(cᵢ²/dᵢ) beside the actuator's kv. The length follows its target with the "
+                           "time constant (kv + 1/Σ cᵢ²/dᵢ) / kp = {} s, {} max_time_constant = {} s{}.",
+                           joint.transmission->actuator, joint.transmission->tendon, joint.transmission->shares.size(),
+                           format_number(time_constant, 3), follows_quickly ? "within" : "above",
+                           format_number(max_time_constant),
+                           follows_quickly ? ": damped hard but not slow" : ": the tendon lags its target"));
+      else if (!below && !steadies_stiff_spring && !load_left_out && !velocity_driven)
         d.note(fmt::format("So far above critical the drive acts as a first-order lag: its slow mode ω·(ζ − √(ζ² − 1)) "
                            "gives a time constant of {} s (≈ d/k), {} max_time_constant = {} s{}.",
                            format_number(time_constant, 3), follows_quickly ? "within" : "above",
@@ -120,8 +165,9 @@ class DriveDampingRatio final : public Rule {
       if (friction_stops_ringing && delta)
         d.note(joint.joint_friction->span, fmt::format(
                    "MuJoCo's frictionloss {} N·m acts as dry friction: each swing loses 4·F/k = {} rad of amplitude, "
-                   "more than a {}° step to the target, so the joint settles within a cycle; it stops up to F/k = {} rad "
-                   "short of the target instead.",
+                   "more than a {}° step to the target, so the joint settles within a cycle. Within F/k = {} rad of the target "
+                   "the spring no longer beats the friction, but MuJoCo's frictionloss is a soft constraint "
+                   "(solreffriction): the joint creeps the rest of the way rather than stopping short.",
                    format_number(friction), format_number(amplitude_lost, 3), format_number(degrees_from_radians(*delta), 3),
                    format_number(friction / driven->stiffness, 3)));
       else if (friction_stops_ringing)
@@ -130,7 +176,8 @@ class DriveDampingRatio final : public Rule {
                    "than the joint's whole range of {} m, so no step can start a second swing; {}.",
                    format_number(friction), format_number(amplitude_lost, 3), format_number(*range_width, 3),
                    friction / driven->stiffness < *range_width
-                       ? fmt::format("the joint stops up to F/k = {} m short of its target instead",
+                       ? fmt::format("within F/k = {} m of its target the spring no longer beats the friction, and "
+                                     "MuJoCo's soft friction constraint (solreffriction) lets it creep the rest of the way",
                                      format_number(friction / driven->stiffness, 3))
                        : fmt::format("F/k = {} m is more than the range too: the servo's force never exceeds the "
                                      "friction, and the joint moves only as far as MuJoCo's soft friction constraint "

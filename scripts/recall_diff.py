@@ -8,7 +8,8 @@ Each argument after the two binaries is a file or directory to check, or a text 
 `list.txt` that names one asset per line (the layout of the fresh review sets). Both binaries
 check the same paths in the same working directory (`--output-format json --exit-zero`), and the
 warnings and errors are compared by file, rule and message (line numbers are left out, so an
-edit that only moves a finding does not count). Printed:
+edit that only moves a finding does not count; a reworded message of the same rule on the same
+file stands for one old finding, not for all of them). Printed:
 
   lost      a warning or error of OLD that NEW does not report at all
   demoted   reported by NEW at a lower severity (a warning or error that became an info, an
@@ -64,6 +65,7 @@ def by_file_and_rule(found):
 def compare(old, new):
     lost, demoted, added = [], [], []
     new_by_rule = by_file_and_rule(new)
+    used = set()  # reworded messages already matched to an old one: each stands for one finding
     for key, severities in sorted(old.items()):
         worst = max(severities, key=RANK.get)
         if RANK[worst] < RANK["warning"]:
@@ -76,11 +78,14 @@ def compare(old, new):
         file, rule, _ = key
         # The same rule on the same file with a reworded message and no lower severity is not a loss.
         rivals = [(m, s) for m, s in new_by_rule.get((file, rule), [])
-                  if (file, rule, m) not in old and RANK[s] >= RANK[worst]]
+                  if (file, rule, m) not in old and (file, rule, m) not in used and RANK[s] >= RANK[worst]]
         if rivals:
+            used.add((file, rule, rivals[0][0]))
             continue
-        lower = [(m, s) for m, s in new_by_rule.get((file, rule), []) if (file, rule, m) not in old]
+        lower = [(m, s) for m, s in new_by_rule.get((file, rule), [])
+                 if (file, rule, m) not in old and (file, rule, m) not in used]
         if lower:
+            used.add((file, rule, lower[0][0]))
             demoted.append((key, worst, lower[0][1]))
         else:
             lost.append((key, worst))
