@@ -26,5 +26,6 @@ const Rule& mimic_copied_drive_gains();
 const Rule& mimic_drive_conflict();
 const Rule& joint_max_velocity();
 const Rule& grasp_slip();
+const Rule& self_collision();
 
 }  // namespace assetlint::rules

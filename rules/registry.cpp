@@ -32,6 +32,7 @@ const std::vector<const Rule*>& checks() {
       &mimic_drive_conflict(),
       &joint_max_velocity(),
       &grasp_slip(),
+      &self_collision(),
   };
   return list;
 }

@@ -10,8 +10,10 @@
 #include <tuple>
 #include <thread>
 
+#include "backends/mujoco/mujoco_collision.h"
 #include "config/drive_overrides.h"
 #include "config/project_root.h"
+#include "engine/collision.h"
 #include "engine/read_policy.h"
 #include "engine/rule.h"
 #include "fix/trailing_comments.h"
@@ -116,6 +118,10 @@ std::vector<Diagnostic> check(ReadResult& result, const Settings& settings, std:
   }
   if (!result.usable) return diagnostics;
   config::apply_drive_settings(result.asset, settings);
+  // The geometry rules collide shapes through MuJoCo's pipeline; rules/ knows only engine/collision.h.
+  static const bool collision_engine_installed =
+      (collision::install_engine(&backends::mujoco::collision_engine()), true);
+  (void)collision_engine_installed;
   const physics::SharedArticulationScope shared_articulation(result.asset);
   for (const Rule* rule : rules::checks()) {
     if (!settings.selection.enabled(rule->info().id)) continue;
