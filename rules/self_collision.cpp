@@ -77,6 +77,30 @@ Bodies rigid_bodies(const Asset& asset) {
   return out;
 }
 
+// Links that a joint at 0 would place outside its range (Kinova's Jaco folds into itself at
+// 0; a gripper's finger whose range starts at 21 mm): the joint cannot be there, PhysX clamps it
+// into range and a user starts from a keyframe, so the zero pose says nothing about their shapes.
+std::vector<bool> off_range(const Asset& asset) {
+  std::vector<bool> off(asset.links.size(), false);
+  std::multimap<std::string_view, const Joint*> by_parent;
+  for (const Joint& joint : asset.joints) by_parent.emplace(joint.parent.text, &joint);
+  std::vector<std::string_view> queue;
+  for (const Joint& joint : asset.joints)
+    if (joint.lower && joint.upper && joint.type != JointType::Fixed &&
+        (joint.lower->value > 0 || joint.upper->value < 0))
+      queue.push_back(joint.child.text);
+  while (!queue.empty()) {
+    const std::string_view name = queue.back();
+    queue.pop_back();
+    const Link* link = asset.find_link(name);
+    if (!link || off[*asset.index_of(*link)]) continue;
+    off[*asset.index_of(*link)] = true;
+    auto [begin, end] = by_parent.equal_range(name);
+    for (auto it = begin; it != end; ++it) queue.push_back(it->second->child.text);
+  }
+  return off;
+}
+
 std::string shape_label(const CollisionShape& shape) {
   switch (shape.kind) {
     case CollisionShape::Kind::Box: return "box";
@@ -117,12 +141,13 @@ class SelfCollision final : public Rule {
 
     const auto poses = link_poses(asset);
     const Bodies bodies = rigid_bodies(asset);
+    const std::vector<bool> unreachable = off_range(asset);
     ColliderPoints meshes(asset, settings);
     std::vector<collision::PlacedShape> shapes;
     std::vector<Placed> placed;
     for (std::size_t i = 0; i < asset.links.size(); ++i) {
       const auto pose = poses.find(asset.links[i].name.text);
-      if (pose == poses.end()) continue;
+      if (pose == poses.end() || unreachable[i]) continue;
       for (const CollisionShape& shape : asset.links[i].collisions) {
         collision::PlacedShape s{bodies.body[i], shape.kind, pose->second * shape.pose, shape.size, nullptr};
         if (shape.kind == CollisionShape::Kind::Mesh && !(s.points = meshes.of(shape))) continue;
