@@ -42,7 +42,7 @@ void write_box_stl(const std::filesystem::path& path, float x, float y, float z)
 TEST_CASE("self-collision: an SRDF beside the URDF silences the pairs it disables", "[self-collision]") {
   TempDir dir;
   write_file(dir.path() / "arm.urdf", read_file(source_dir() / kFixture));
-  auto before = run_cli({"--select", "self-collision", "arm.urdf"}, dir.path());
+  auto before = run_cli({"--fail-on", "info", "--select", "self-collision", "arm.urdf"}, dir.path());
   CHECK(before.exit_code == 1);
   CHECK(before.out.find("links 'base_link' and 'forearm' overlap by 5 mm at the default pose") != std::string::npos);
 
@@ -52,14 +52,14 @@ TEST_CASE("self-collision: an SRDF beside the URDF silences the pairs it disable
   <disable_collisions link1="forearm" link2="base_link" reason="Never"/>
 </robot>
 )");
-  auto after = run_cli({"--select", "self-collision", "arm.urdf"}, dir.path());
+  auto after = run_cli({"--fail-on", "info", "--select", "self-collision", "arm.urdf"}, dir.path());
   CHECK(after.exit_code == 0);
   CHECK(after.out == "No problems found in 1 file.\n");
 
   // An SRDF of another robot is not read for this one.
   write_file(dir.path() / "arm.srdf", R"(<robot name="other"><disable_collisions link1="forearm" link2="base_link" reason="Never"/></robot>)");
   write_file(dir.path() / "other.srdf", R"(<robot name="third"/>)");
-  CHECK(run_cli({"--select", "self-collision", "arm.urdf"}, dir.path()).exit_code == 1);
+  CHECK(run_cli({"--fail-on", "info", "--select", "self-collision", "arm.urdf"}, dir.path()).exit_code == 1);
 }
 
 TEST_CASE("self-collision: mesh colliders collide as MuJoCo's hulls, with their scale", "[self-collision]") {
@@ -72,7 +72,7 @@ TEST_CASE("self-collision: mesh colliders collide as MuJoCo's hulls, with their 
   REQUIRE(at != std::string::npos);
   urdf.replace(at, box.size(), R"(<geometry><mesh filename="block.stl" scale="0.001 0.001 0.001"/></geometry>)");
   write_file(dir.path() / "arm.urdf", urdf);
-  auto run = run_cli({"--select", "self-collision", "arm.urdf"}, dir.path());
+  auto run = run_cli({"--fail-on", "info", "--select", "self-collision", "arm.urdf"}, dir.path());
   INFO(run.out << run.err);
   // Unscaled, the mesh would be 1000 times the box and reach everywhere; scaled, it is the box again.
   CHECK(run.out.find("links 'base_link' and 'forearm' overlap by 5 mm at the default pose") != std::string::npos);
@@ -81,21 +81,21 @@ TEST_CASE("self-collision: mesh colliders collide as MuJoCo's hulls, with their 
   // A mesh that cannot be found leaves its link out, and the check still runs on the rest.
   urdf.replace(urdf.find("block.stl"), 9, "missing.stl");
   write_file(dir.path() / "arm.urdf", urdf);
-  CHECK(run_cli({"--select", "self-collision", "arm.urdf"}, dir.path()).exit_code == 0);
+  CHECK(run_cli({"--fail-on", "info", "--select", "self-collision", "arm.urdf"}, dir.path()).exit_code == 0);
 }
 
 TEST_CASE("self-collision: MuJoCo's flags decide the MJCF pairs", "[self-collision]") {
   TempDir dir;
   const std::string model = read_file(source_dir() / "fixtures/rules/self-collision/arm_free_base_control.xml");
   write_file(dir.path() / "arm.xml", model);
-  CHECK(run_cli({"--select", "self-collision", "arm.xml"}, dir.path()).exit_code == 0);
+  CHECK(run_cli({"--fail-on", "info", "--select", "self-collision", "arm.xml"}, dir.path()).exit_code == 0);
 
   // The base moves (freejoint), so only the parent filter keeps the shoulder's 1 cm out.
   const auto with_option = [&](const std::string& option) {
     std::string text = model;
     text.replace(text.find("  <worldbody>"), 0, option + "\n");
     write_file(dir.path() / "arm.xml", text);
-    return run_cli({"--select", "self-collision", "arm.xml"}, dir.path());
+    return run_cli({"--fail-on", "info", "--select", "self-collision", "arm.xml"}, dir.path());
   };
   auto unfiltered = with_option(R"(  <option><flag filterparent="disable"/></option>)");
   INFO(unfiltered.out);
