@@ -14,10 +14,9 @@
 #include "commands/exit_status.h"
 #include "commands/tune_apply.h"
 #include "commands/tune_derivation.h"
+#include "commands/verify_drives.h"
+#include "commands/verify_meshes.h"
 #include "commands/verify_report.h"
-#include "config/project_root.h"
-#include "formats/mesh/mesh_points.h"
-#include "formats/xacro/packages.h"
 #include "physics/gripper.h"
 #include "physics/sizing.h"
 #include "util/numbers.h"
@@ -62,17 +61,6 @@ class Progress {
   std::string run_;
 };
 
-// A `package://pkg/rest` mesh the checked tree does not hold, found as `check` finds $(find pkg)
-// for a xacro file: the package holding the asset and those around it, then ROS_PACKAGE_PATH.
-std::optional<std::string> package_file(const std::string& filename, const std::string& asset, const std::string& root) {
-  if (!filename.starts_with("package://")) return std::nullopt;
-  const std::string rest = filename.substr(10);
-  const auto slash = rest.find('/');
-  const auto package = xacro::find_ros_package(rest.substr(0, slash), asset, root);
-  if (!package || slash == std::string::npos) return std::nullopt;
-  return (std::filesystem::path(*package) / rest.substr(slash + 1)).lexically_normal().string();
-}
-
 // Every scene of `plan` that can be judged, stepped and judged; the rest reported as not run.
 std::optional<std::vector<verify::SceneResult>> run_scenes(verify::Engine& engine, const verify::VerifyPlan& plan,
                                                            const Settings& settings, long& steps, std::string& error,
@@ -110,6 +98,13 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
                             "Bisect the lowest max force, then the lowest stiffness (damping re-derived for the same "
                             "damping ratio), for which every scene still passes");
   app.add_flag("--apply", apply, "With --fine-tune: write those values as `tune --apply` does")->needs(fine);
+  bool drives = false;
+  unsigned jobs = 0;
+  app.add_flag("--drives", drives,
+               "Test every actuated joint's drive (step, sweep, hold, velocity, mimic), base fixed, gravity on; the "
+               "default when asset-lint.toml has no [gripper] spec");
+  app.add_option("-j,--jobs", jobs, "With the drive tests: scenes stepped in parallel (default: one per core)")
+      ->check(CLI::Range(1u, 256u));
   app.add_option("--config", config, "Use this asset-lint.toml (default: the nearest one above the asset)");
   CompositionScope scope;
   add_scope_options(app, scope);
@@ -123,6 +118,11 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (input.error) return fail(*input.error);
   const Settings& settings = input.settings;
   const Asset& asset = input.loaded.read.asset;
+  if (drives || !has_gripper_spec(settings.gripper)) {
+    if (fine_tune) return fail("--fine-tune fine-tunes a gripper's scenes; the drive tests do not take it");
+    DriveTestOptions options{path, format, plot, jobs};
+    return run_drive_tests(options, input, out, err);
+  }
   std::string error;
   const Joint* joint = tune_joint(asset, settings, std::nullopt, error, nullptr);  // verify has no --joint
   if (!joint) return fail(fmt::format("{}: {}", path, error));
@@ -137,21 +137,8 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   // Collision meshes, each read once; visual meshes are not in the model and never read.
   std::vector<std::string> link_names;
   for (const Link& link : asset.links) link_names.push_back(link.name.text);
-  const std::string root = config::checked_root(path, settings);
-  const ReadPolicy reads = config::read_policy(path, settings);
-  for (const std::string& filename : verify::collision_meshes(asset, link_names)) {
-    auto file = mesh::resolve_mesh(filename, plan.asset_dir.empty() ? "." : plan.asset_dir,
-                                   root.empty() ? (plan.asset_dir.empty() ? "." : plan.asset_dir) : root, error);
-    if (!file) file = package_file(filename, path, root);
-    if (!file) return fail(fmt::format("{}: {}", path, error));
-    if (auto refused = reads.refusal(*file)) return fail(fmt::format("{}: mesh '{}' {}", path, filename, *refused));
-    auto points = mesh::read_points(*file, error);
-    if (!points) return fail(fmt::format("{}: {}", path, error));
-    plan.meshes[filename] = std::move(*points);
-  }
-  for (const Link& link : asset.links)
-    for (const CollisionShape& shape : link.collisions)
-      if (shape.kind == CollisionShape::Kind::Mesh && !shape.points.empty()) plan.meshes[shape.mesh] = shape.points;
+  if (!read_collision_meshes(path, asset, settings, link_names, plan.meshes, error))
+    return fail(fmt::format("{}: {}", path, error));
   auto layout = verify::gripper_layout(asset, *joint, error);
   if (!layout) return fail(fmt::format("{}: {}", path, error));
   plan.layout = std::move(*layout);

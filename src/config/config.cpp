@@ -4,6 +4,8 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
+
 #include "rules/registry.h"
 
 namespace assetlint::config {
@@ -247,7 +249,26 @@ class Loader {
       else if (k == "slip_m") v.slip_m = *positive(node, k);
       else if (k == "jitter_m_s") v.jitter_m_s = *positive(node, k);
       else if (k == "window_s") v.window_s = *positive(node, k);
+      else if (k == "drives") verify_drives(table(node, "verify.drives"));
       else unknown(key, "verify");
+    }
+  }
+
+  void verify_drives(const toml::table& t) {
+    VerifySettings::Drives& d = settings_.verify.drives;
+    const std::pair<std::string_view, Configured<double>*> keys[] = {
+        {"overshoot", &d.overshoot},         {"settle_band", &d.settle_band},
+        {"settle_time_s", &d.settle_time_s}, {"sign_changes", &d.sign_changes},
+        {"sweep_return_rad", &d.sweep_return_rad}, {"sweep_end_rad", &d.sweep_end_rad},
+        {"sweep_return_m", &d.sweep_return_m},     {"sweep_end_m", &d.sweep_end_m},
+        {"velocity_over", &d.velocity_over}, {"droop_rad", &d.droop_rad},
+        {"droop_m", &d.droop_m},             {"mimic_error_rad", &d.mimic_error_rad},
+        {"mimic_error_m", &d.mimic_error_m}};
+    for (const auto& [key, node] : t) {
+      const std::string_view k = key.str();
+      const auto* found = std::find_if(std::begin(keys), std::end(keys), [&](const auto& e) { return e.first == k; });
+      if (found == std::end(keys)) unknown(key, "verify.drives");
+      else *found->second = *positive(node, k);
     }
   }
 

@@ -61,6 +61,23 @@ struct VerifySettings {
   Configured<double> slip_m{0.005, "default"};
   Configured<double> jitter_m_s{0.001, "default"};
   Configured<double> window_s{1.0, "default"};  // the steady period judged at the end of each scene
+  // [verify.drives]: the drive tests of every actuated joint (docs/verify.md). Defaults are
+  // SimReady's published ones where it has one; lengths for prismatic joints are asset-lint's.
+  struct Drives {
+    Configured<double> overshoot{0.5, "default (SimReady)"};        // fraction of the step
+    Configured<double> settle_band{0.05, "default (SimReady)"};     // fraction of the step
+    Configured<double> settle_time_s{5.0, "default (SimReady)"};
+    Configured<double> sign_changes{20, "default (SimReady)"};      // velocity sign changes after the first peak
+    Configured<double> sweep_return_rad{0.01, "default (SimReady)"};
+    Configured<double> sweep_end_rad{0.1, "default (SimReady)"};
+    Configured<double> sweep_return_m{0.001, "default"};
+    Configured<double> sweep_end_m{0.01, "default"};
+    Configured<double> velocity_over{0.05, "default (SimReady)"};   // fraction over the max joint velocity
+    Configured<double> droop_rad{0.1, "default"};                   // static droop at the start pose
+    Configured<double> droop_m{0.01, "default"};
+    Configured<double> mimic_error_rad{0.01, "default"};
+    Configured<double> mimic_error_m{0.001, "default"};
+  } drives;
 };
 
 // Drive gains for formats that carry none (URDF), as an importer or actuator config sets them.

@@ -8,21 +8,18 @@
 #include <map>
 #include <set>
 
+#include "backends/mujoco/mjcf_text.h"
+
 namespace assetlint::backends::mujoco {
 namespace {
 
 using verify::SceneSpec;
 using verify::VerifyPlan;
 
-std::string num(double v) { return fmt::format("{:.17g}", v); }
-std::string vec(const Eigen::Vector3d& v) { return fmt::format("{} {} {}", num(v.x()), num(v.y()), num(v.z())); }
-std::string quat(const Eigen::Matrix3d& r) {
-  const Eigen::Quaterniond q(r);
-  return fmt::format("{} {} {} {}", num(q.w()), num(q.x()), num(q.y()), num(q.z()));
-}
-std::string pose_attributes(const Eigen::Isometry3d& pose) {
-  return fmt::format("pos=\"{}\" quat=\"{}\"", vec(pose.translation()), quat(pose.linear()));
-}
+std::string num(double v) { return mjcf_number(v); }
+std::string vec(const Eigen::Vector3d& v) { return mjcf_vector(v); }
+std::string quat(const Eigen::Matrix3d& r) { return mjcf_quat(r); }
+std::string pose_attributes(const Eigen::Isometry3d& pose) { return mjcf_pose(pose); }
 
 class Writer {
  public:
@@ -74,33 +71,8 @@ class Writer {
   private:
   std::string joint_name(const Joint& joint) const { return mujoco::joint_name(asset_, joint); }
 
-  // One <mesh> per file and scale, its points written inline (MuJoCo takes their convex hull),
-  // so that two files with the same name in different folders stay two meshes.
-  static std::string mesh_key(const CollisionShape& shape) { return shape.mesh + "|" + vec(shape.mesh_scale); }
-
   bool write_meshes(std::string& error) {
-    bool opened = false;
-    for (const Link& link : asset_.links) {
-      for (const CollisionShape& shape : link.collisions) {
-        if (shape.kind != CollisionShape::Kind::Mesh || mesh_ids_.count(mesh_key(shape))) continue;
-        const auto found = plan_.meshes.find(shape.mesh);
-        if (found == plan_.meshes.end() || found->second.size() < 4) {
-          error = fmt::format("mesh '{}' of link '{}' has fewer than 4 points: nothing to collide with", shape.mesh,
-                              link.name.text);
-          return false;
-        }
-        const std::size_t id = mesh_ids_.size();
-        mesh_ids_[mesh_key(shape)] = id;
-        std::string vertices;
-        for (const Eigen::Vector3d& p : found->second)
-          vertices += (vertices.empty() ? "" : " ") + vec(p.cwiseProduct(shape.mesh_scale));
-        if (!opened) out_ += "  <asset>\n";
-        opened = true;
-        out_ += fmt::format("    <mesh name=\"m{}\" vertex=\"{}\"/>\n", id, vertices);
-      }
-    }
-    if (opened) out_ += "  </asset>\n";
-    return true;
+    return write_mesh_assets(asset_, plan_.meshes, [](const Link&) { return true; }, out_, mesh_ids_, error);
   }
 
   bool write_link(const std::string& name, const Eigen::Isometry3d& pose, const Joint* joint, int indent,
@@ -159,18 +131,7 @@ class Writer {
     return true;
   }
 
-  std::string geometry(const CollisionShape& shape) const {
-    switch (shape.kind) {
-      case CollisionShape::Kind::Box: return fmt::format("type=\"box\" size=\"{}\"", vec(0.5 * shape.size));
-      case CollisionShape::Kind::Sphere: return fmt::format("type=\"sphere\" size=\"{}\"", num(shape.size.x()));
-      case CollisionShape::Kind::Cylinder:
-        return fmt::format("type=\"cylinder\" size=\"{} {}\"", num(shape.size.x()), num(0.5 * shape.size.y()));
-      case CollisionShape::Kind::Capsule:
-        return fmt::format("type=\"capsule\" size=\"{} {}\"", num(shape.size.x()), num(0.5 * shape.size.y()));
-      case CollisionShape::Kind::Mesh: break;
-    }
-    return fmt::format("type=\"mesh\" mesh=\"m{}\"", mesh_ids_.at(mesh_key(shape)));
-  }
+  std::string geometry(const CollisionShape& shape) const { return mjcf_geometry(shape, mesh_ids_); }
 
   void write_object(const verify::ObjectSpec& object) {
     const verify::GripperLayout& l = plan_.layout;
@@ -190,7 +151,7 @@ class Writer {
   const Asset& asset_;
   std::string out_;
   std::set<std::string> visited_;
-  std::map<std::string, std::size_t> mesh_ids_;
+  MeshIds mesh_ids_;
 };
 
 }  // namespace
