@@ -17,6 +17,7 @@ constexpr double kSettleBefore = 0.5;  // s: the robot settles under gravity bef
 constexpr double kHoldEnd = 0.5;       // s: the sweep's target rests at each limit
 constexpr double kHoldReturn = 1.0;    // s: and back at the start
 constexpr double kAfterSettle = 1.0;   // s: the step runs this long past the settle limit
+constexpr double kSteadyRest = 0.5;    // s: or ends once every joint has been at rest this long
 // The sweep's speed without a max joint velocity: 1 rad/s, 0.1 m/s.
 constexpr double kDefaultRampAngular = 1.0, kDefaultRampLinear = 0.1;
 
@@ -132,6 +133,7 @@ std::vector<DriveScene> drive_scenes(const DrivePlan& plan) {
     const double from = j.lower ? 0.5 * (*j.lower + *j.upper) : j.start;
     const double size = physics::drive_step_size(range, j.angular);
     step.step_at = kSettleBefore;
+    step.rest_ends = kSteadyRest;
     step.duration = kSettleBefore + limits.settle_time_s.value + kAfterSettle;
     step.waypoints = {{0, from}, {kSettleBefore, from}, {kSettleBefore, from + size}};
     if (!(size > 0)) step.not_run = "not run: a prismatic joint without a finite range has no step size";

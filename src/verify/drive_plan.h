@@ -61,6 +61,9 @@ struct DriveScene {
   double duration = 0;
   std::vector<std::pair<double, double>> waypoints;  // (t, target)
   double step_at = 0;    // step: when the target steps
+  // The scene may end early once the robot has been at rest this long after `step_at` (a robot at
+  // rest under constant targets stays at rest): 0 never.
+  double rest_ends = 0;
   std::vector<double> marks;  // sweep: when the target reaches the upper limit's hold end, the lower's, and the end
   double speed = 0;      // sweep: how fast its target moves (rad/s or m/s)
   double rest = 0;       // sweep: how long it rests at each limit (s)

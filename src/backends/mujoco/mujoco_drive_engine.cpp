@@ -24,6 +24,10 @@ void keep_warning(const char* message) {
 }
 void throw_error(const char* message) { throw std::runtime_error(message); }
 
+// rad/s (m/s): every joint slower than this is at rest; in the half second the step needs to be
+// called steady it moves at most 0.5 µrad.
+constexpr double kRestSpeed = 1e-6;
+
 struct DataDeleter {
   void operator()(mjData* d) const { mj_deleteData(d); }
 };
@@ -163,6 +167,7 @@ std::optional<verify::DriveTrajectory> MujocoDriveEngine::run(const verify::Driv
     sample();
     const int per_sample = std::max(1, static_cast<int>(std::lround(s.plan.sample / m->opt.timestep)));
     const long count = std::lround(scene.duration / (per_sample * m->opt.timestep));
+    double rest_since = -1;  // s: since when every joint has been at rest (< 0: it is not)
     for (long n = 0; n < count; ++n) {
       for (int k = 0; k < per_sample; ++k) {
         d->ctrl[actuator] = verify::scene_target(scene, d->time);
@@ -179,6 +184,13 @@ std::optional<verify::DriveTrajectory> MujocoDriveEngine::run(const verify::Driv
         break;
       }
       sample();
+      if (scene.rest_ends > 0 && d->time > scene.step_at + 1e-9) {
+        double fastest = 0;
+        for (int i = 0; i < m->nv; ++i) fastest = std::max(fastest, std::abs(d->qvel[i]));
+        if (fastest > kRestSpeed) rest_since = -1;
+        else if (rest_since < 0) rest_since = d->time;
+        if (rest_since >= 0 && d->time - rest_since >= scene.rest_ends - 1e-9) break;
+      }
     }
   } catch (const std::runtime_error& e) {
     error = fmt::format("MuJoCo error in scene '{}': {}", scene.name, e.what());
