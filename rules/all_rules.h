@@ -27,5 +27,7 @@ const Rule& mimic_drive_conflict();
 const Rule& joint_max_velocity();
 const Rule& grasp_slip();
 const Rule& self_collision();
+const Rule& units_collider_scale();
+const Rule& inertia_com_outside();
 
 }  // namespace assetlint::rules

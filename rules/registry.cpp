@@ -33,6 +33,8 @@ const std::vector<const Rule*>& checks() {
       &joint_max_velocity(),
       &grasp_slip(),
       &self_collision(),
+      &units_collider_scale(),
+      &inertia_com_outside(),
   };
   return list;
 }

@@ -143,18 +143,43 @@ class SelfCollision final : public Rule {
     const Bodies bodies = rigid_bodies(asset);
     const std::vector<bool> unreachable = off_range(asset);
     ColliderPoints meshes(asset, settings);
-    std::vector<collision::PlacedShape> shapes;
-    std::vector<Placed> placed;
+    std::vector<collision::PlacedShape> all_shapes;
+    std::vector<Placed> all_placed;
+    std::vector<Eigen::AlignedBox3d> boxes;  // in the world
     for (std::size_t i = 0; i < asset.links.size(); ++i) {
       const auto pose = poses.find(asset.links[i].name.text);
       if (pose == poses.end() || unreachable[i]) continue;
       for (const CollisionShape& shape : asset.links[i].collisions) {
         collision::PlacedShape s{bodies.body[i], shape.kind, pose->second * shape.pose, shape.size, nullptr};
         if (shape.kind == CollisionShape::Kind::Mesh && !(s.points = meshes.of(shape))) continue;
-        shapes.push_back(std::move(s));
-        placed.push_back({i, &shape});
+        const auto box = meshes.box_in_link(shape);
+        if (!box) continue;
+        Eigen::AlignedBox3d world;
+        for (int c = 0; c < 8; ++c) world.extend(pose->second * box->corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+        all_shapes.push_back(std::move(s));
+        all_placed.push_back({i, &shape});
+        boxes.push_back(world);
       }
     }
+    // Only shapes whose boxes reach into a shape of another body that no joint joins go to the
+    // engine: building hulls is what costs, and most shapes of a robot at rest touch only their
+    // neighbours.
+    std::vector<bool> candidate(all_shapes.size(), false);
+    for (std::size_t a = 0; a < all_shapes.size(); ++a)
+      for (std::size_t b = a + 1; b < all_shapes.size(); ++b) {
+        const std::size_t body_a = all_shapes[a].body, body_b = all_shapes[b].body;
+        if (body_a == body_b || (asset.format == SourceFormat::Urdf && bodies.joined(body_a, body_b))) continue;
+        const Eigen::AlignedBox3d common = boxes[a].intersection(boxes[b]);
+        if (common.isEmpty() || !(common.sizes().minCoeff() > tolerance)) continue;
+        candidate[a] = candidate[b] = true;
+      }
+    std::vector<collision::PlacedShape> shapes;
+    std::vector<Placed> placed;
+    for (std::size_t i = 0; i < all_shapes.size(); ++i)
+      if (candidate[i]) {
+        shapes.push_back(std::move(all_shapes[i]));
+        placed.push_back(all_placed[i]);
+      }
     std::string error;
     const auto found = engine->overlaps(shapes, error);
     if (!found) return;

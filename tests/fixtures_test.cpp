@@ -51,6 +51,13 @@ FileReport lint_fixture(const std::filesystem::path& file) {
     INFO((error ? error->to_string() : std::string()));
     REQUIRE_FALSE(error);
   }
+  // Rules that read files beside the asset (meshes, an SRDF) open them from the disk, relative
+  // to the working directory, as the CLI does: run from fixtures/, where the paths are relative to.
+  struct InFixtures {
+    std::filesystem::path before = std::filesystem::current_path();
+    InFixtures() { std::filesystem::current_path(test::fixtures_dir()); }
+    ~InFixtures() { std::filesystem::current_path(before); }
+  } in_fixtures;
   return lint_text(relative, test::read_file(file), settings, FixturesFileSystem());
 }
 
