@@ -152,9 +152,9 @@ TEST_CASE("verify drives: a joint without a drive is not run and says what would
   CHECK(r.exit_code == 1);
   // The proposal: holding gravity's 2.943 N·m at q = 0 within the 0.1 rad droop limit needs 29.43 N·m/rad,
   // but the step (0 → 0.5 rad) settles within 5 % of it only if gravity's m·g·l·cos 0.5 = 2.583 N·m at
-  // its target leaves less than 0.025 rad: 103.3 N·m/rad. Damping for ζ = 1 on 0.1 kg·m² is
-  // 2·√(103.3 × 0.1) = 6.428 N·m·s/rad.
-  CHECK(r.out.find("not run: no drive: add [drives.swing] stiffness = 103.3, damping = 6.428 in asset-lint.toml") !=
+  // its target leaves less than 0.025 rad, and the proposal aims at half of that: 206.6 N·m/rad.
+  // Damping for ζ = 1 on 0.1 kg·m² is 2·√(206.6 × 0.1) = 9.091 N·m·s/rad.
+  CHECK(r.out.find("not run: no drive: add [drives.swing] stiffness = 206.6, damping = 9.091 in asset-lint.toml") !=
         std::string::npos);
 }
 
@@ -174,15 +174,28 @@ TEST_CASE("verify drives: the same input gives the same bytes, in parallel or no
   CHECK(std::system(command.c_str()) == 0);
 }
 
-TEST_CASE("verify drives: the proposed gains pass when applied", "[verify][drives]") {
-  // The gains the no-drive report proposes for the horizontal pendulum (k = 103.3, d = 6.428: ζ = 1):
+TEST_CASE("verify drives: the proposed gains pass when applied, and --fine-tune confirms them", "[verify][drives]") {
+  // The gains the no-drive report proposes for the horizontal pendulum (k = 206.6, d = 9.091: ζ = 1):
   // its step settles within the band and its hold is within the droop limit.
-  Pendulum p("0 1 0", 103.3, 6.428);
+  Pendulum p("0 1 0", 206.6, 9.091);
   const auto report = p.report();
   CHECK(test_of(report, "step")["passed"] == true);
   CHECK(test_of(report, "sweep")["passed"] == true);
   CHECK(test_of(report, "hold")["passed"] == true);
   CHECK(test_of(report, "step")["metrics"]["overshoot"].get<double>() < 0.05);
+  // kv = 0 rings; --fine-tune proposes critical damping on 0.1 kg·m² at the stiffness the step needs and
+  // tests the pendulum again with it.
+  Pendulum ringing("0 1 0", 300, 0);
+  const auto r = ringing.run({"--fine-tune"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 1);  // the verdict is on the asset as it is
+  const auto tuned = nlohmann::json::parse(r.out)["fine_tune"];
+  CHECK(tuned["runs"] == 2);
+  REQUIRE(tuned["joints"].size() == 1);
+  CHECK(tuned["joints"][0]["joint"] == "swing");
+  CHECK(tuned["joints"][0]["proposed"]["stiffness"].get<double>() == Approx(300));
+  CHECK(tuned["joints"][0]["proposed"]["damping"].get<double>() == Approx(2 * std::sqrt(300 * kInertia)).epsilon(0.01));
+  CHECK(tuned["joints"][0]["passed"] == true);
 }
 
 TEST_CASE("verify drives: an MJCF pendulum on a free base: the base is pinned, the actuator's gains are tested",

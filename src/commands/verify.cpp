@@ -119,8 +119,10 @@ int run_verify(const std::vector<std::string>& args, std::ostream& out, std::ost
   const Settings& settings = input.settings;
   const Asset& asset = input.loaded.read.asset;
   if (drives || !has_gripper_spec(settings.gripper)) {
-    if (fine_tune) return fail("--fine-tune fine-tunes a gripper's scenes; the drive tests do not take it");
-    DriveTestOptions options{path, format, plot, jobs};
+    if (apply)
+      return fail("--apply writes a gripper's fine-tuning; the drive tests print the gains each joint needs (the "
+                  "fine-tuning's proposals, confirmed by a second run), to be written where the format keeps them");
+    DriveTestOptions options{path, format, plot, jobs, fine_tune};
     return run_drive_tests(options, input, out, err);
   }
   std::string error;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 #include <cmath>
 #include <thread>
 
@@ -29,6 +30,53 @@ void parallel_for(std::size_t count, unsigned threads, const std::function<void(
   for (unsigned t = 1; t < std::min<std::size_t>(threads, count); ++t) pool.emplace_back(worker);
   worker();
   for (auto& thread : pool) thread.join();
+}
+
+// One verification: the engine for the plan, every scene stepped and judged.
+struct DriveRun {
+  std::unique_ptr<backends::mujoco::MujocoDriveEngine> engine;
+  std::vector<verify::DriveScene> scenes;
+  std::vector<std::optional<verify::DriveTrajectory>> trajectories;
+  std::vector<verify::JointLoads> loads;
+  std::vector<verify::DriveResult> results;  // point into scenes and trajectories: a DriveRun is not copied
+  long steps = 0;
+};
+
+DriveRun run_drives(const verify::DrivePlan& plan, unsigned threads, std::string& error) {
+  DriveRun run;
+  run.engine = std::make_unique<backends::mujoco::MujocoDriveEngine>(plan, error);
+  if (!error.empty()) return run;
+  run.scenes = verify::drive_scenes(plan);
+  // Every scene and every joint's loads are independent: one job each, results in fixed slots.
+  run.trajectories.resize(run.scenes.size());
+  run.loads.resize(plan.joints.size());
+  std::vector<std::string> errors(run.scenes.size());
+  parallel_for(run.scenes.size() + plan.joints.size(), threads, [&](std::size_t i) {
+    if (i < run.scenes.size()) {
+      if (run.scenes[i].not_run.empty()) run.trajectories[i] = run.engine->run(run.scenes[i], errors[i]);
+    } else {
+      run.loads[i - run.scenes.size()] = verify::joint_loads(plan, *run.engine, i - run.scenes.size());
+    }
+  });
+  for (const std::string& e : errors)
+    if (!e.empty() && error.empty()) error = e;
+  for (const auto& t : run.trajectories)
+    if (t) run.steps += t->steps;
+  for (std::size_t j = 0; j < plan.joints.size(); ++j) {
+    const verify::DriveScene* step = nullptr;
+    const verify::DriveScene* sweep = nullptr;
+    const verify::DriveTrajectory* step_run = nullptr;
+    const verify::DriveTrajectory* sweep_run = nullptr;
+    for (std::size_t i = 0; i < run.scenes.size(); ++i) {
+      if (run.scenes[i].joint != j) continue;
+      const verify::DriveTrajectory* t = run.trajectories[i] ? &*run.trajectories[i] : nullptr;
+      if (run.scenes[i].kind == verify::DriveTestKind::Step) step = &run.scenes[i], step_run = t;
+      else sweep = &run.scenes[i], sweep_run = t;
+    }
+    for (auto& r : verify::judge_joint(plan, j, run.loads[j], step, step_run, sweep, sweep_run))
+      run.results.push_back(std::move(r));
+  }
+  return run;
 }
 
 }  // namespace
@@ -60,46 +108,38 @@ int run_drive_tests(const DriveTestOptions& options, const CommandAsset& input, 
   std::string error;
   if (!read_collision_meshes(options.path, asset, settings, shaped, plan.meshes, error)) return fail(error);
 
-  backends::mujoco::MujocoDriveEngine engine(plan, error);
-  if (!error.empty()) return fail(error);
-  const std::vector<verify::DriveScene> scenes = verify::drive_scenes(plan);
   const unsigned threads = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
-
-  // Every scene and every joint's loads are independent: one job each, results in fixed slots.
-  std::vector<std::optional<verify::DriveTrajectory>> trajectories(scenes.size());
-  std::vector<std::string> errors(scenes.size());
-  std::vector<verify::JointLoads> loads(plan.joints.size());
-  const std::size_t jobs = scenes.size() + plan.joints.size();
-  parallel_for(jobs, threads, [&](std::size_t i) {
-    if (i < scenes.size()) {
-      if (scenes[i].not_run.empty()) trajectories[i] = engine.run(scenes[i], errors[i]);
-    } else {
-      loads[i - scenes.size()] = verify::joint_loads(plan, engine, i - scenes.size());
-    }
-  });
-  for (const std::string& e : errors)
-    if (!e.empty()) return fail(e);
-
+  DriveRun run = run_drives(plan, threads, error);
+  if (!error.empty()) return fail(error);
   DriveReport report;
   report.path = options.path;
-  report.engine_version = engine.version();
-  report.translation = engine.translation();
+  report.engine_version = run.engine->version();
+  report.translation = run.engine->translation();
   report.plan = &plan;
-  for (const auto& t : trajectories)
-    if (t) report.steps += t->steps;
-  for (std::size_t j = 0; j < plan.joints.size(); ++j) {
-    const verify::DriveScene* step = nullptr;
-    const verify::DriveScene* sweep = nullptr;
-    const verify::DriveTrajectory* step_run = nullptr;
-    const verify::DriveTrajectory* sweep_run = nullptr;
-    for (std::size_t i = 0; i < scenes.size(); ++i) {
-      if (scenes[i].joint != j) continue;
-      const verify::DriveTrajectory* run = trajectories[i] ? &*trajectories[i] : nullptr;
-      if (scenes[i].kind == verify::DriveTestKind::Step) step = &scenes[i], step_run = run;
-      else sweep = &scenes[i], sweep_run = run;
+  report.steps = run.steps;
+  report.results = run.results;
+
+  // Fine-tuning: every joint that fails a test or has no drive gets the proposed gains, and the
+  // whole robot is tested again with them.
+  verify::DrivePlan tuned = plan;
+  DriveRun confirm;
+  if (options.fine_tune) {
+    for (std::size_t j = 0; j < plan.joints.size(); ++j) {
+      const bool fails = std::any_of(run.results.begin(), run.results.end(), [&](const verify::DriveResult& r) {
+        return r.joint == plan.joints[j].joint->name.text && r.ran && !r.passed;
+      });
+      if (!fails && plan.joints[j].drive) continue;
+      tuned.joints[j].drive = verify::proposed_drive(plan, j, run.loads[j]);
+      tuned.joints[j].no_drive.clear();
+      report.fine_tuned.push_back(j);
     }
-    for (auto& r : verify::judge_joint(plan, j, loads[j], step, step_run, sweep, sweep_run))
-      report.results.push_back(std::move(r));
+    if (!report.fine_tuned.empty()) {
+      confirm = run_drives(tuned, threads, error);
+      if (!error.empty()) return fail(error);
+      report.tuned_plan = &tuned;
+      report.tuned_results = confirm.results;
+      report.steps += confirm.steps;
+    }
   }
   if (options.format == "json") write_drive_json(out, report);
   else write_drive_text(out, report);

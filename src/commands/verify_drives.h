@@ -14,6 +14,7 @@ struct DriveTestOptions {
   std::string format = "text";
   std::optional<std::string> plot;
   unsigned jobs = 0;  // 0: one per core
+  bool fine_tune = false;  // propose gains for each failing joint and test the robot again with them
 };
 
 // Whether [gripper] says anything: a spec sheet makes `verify` run the gripper's scenes.

@@ -68,6 +68,36 @@ std::string figures(const verify::DriveResult& r, const verify::DrivePlan& plan)
 
 std::string verdict(const verify::DriveResult& r) { return !r.ran ? "not run" : r.passed ? "pass" : "FAIL"; }
 
+std::string gains(const verify::DriveSpec& d, const verify::TestedJoint& j) {
+  std::string text = fmt::format("k {} {}/{}, d {} {}·s/{}", format_number(d.stiffness, 4), j.force_unit(), j.unit(),
+                                 format_number(d.damping, 4), j.force_unit(), j.unit());
+  if (d.max_force) text += fmt::format(", max force {} {}", format_number(*d.max_force, 4), j.force_unit());
+  return text;
+}
+
+// Whether every test of a joint that ran in the second run passed, and what failed.
+std::vector<std::string> tuned_failures(const DriveReport& report, const std::string& joint) {
+  std::vector<std::string> failures;
+  for (const auto& r : report.tuned_results)
+    if (r.joint == joint && r.ran && !r.passed)
+      for (const auto& f : r.failures) failures.push_back(fmt::format("{}: {}", verify::drive_test_name(r.kind), f));
+  return failures;
+}
+
+std::vector<std::string> fine_tune_lines(const DriveReport& report) {
+  std::vector<std::string> lines;
+  for (std::size_t index : report.fine_tuned) {
+    const verify::TestedJoint& today = report.plan->joints[index];
+    const verify::TestedJoint& tuned = report.tuned_plan->joints[index];
+    const auto failures = tuned_failures(report, today.joint->name.text);
+    std::string verdict = failures.empty() ? "every test that runs passes" : "still fails " + failures.front();
+    lines.push_back(fmt::format("{}: {} → {}: {}", today.joint->name.text,
+                                today.drive ? gains(*today.drive, today) : std::string("no drive"),
+                                gains(*tuned.drive, tuned), verdict));
+  }
+  return lines;
+}
+
 }  // namespace
 
 bool DriveReport::passed() const {
@@ -100,6 +130,10 @@ void write_drive_text(std::ostream& out, const DriveReport& report) {
     out << "\n";
     for (const auto& cause : r.causes) out << "    cause: " << cause << "\n";
     if (!r.fix.empty()) out << "    fix: " << r.fix << "\n";
+  }
+  if (!report.fine_tuned.empty()) {
+    out << "\nFine-tuning: the proposed gains, the robot tested again with them:\n";
+    for (const auto& line : fine_tune_lines(report)) out << "  " << line << "\n";
   }
   out << fmt::format("\n{} of {} tests passed; {} engine steps. {}\n", passed, report.results.size(), report.steps,
                      report.passed() ? "Every drive does what its gains promise." : "Not verified.");
@@ -152,6 +186,24 @@ void write_drive_json(std::ostream& out, const DriveReport& report) {
     scenes.push_back(std::move(s));
   }
   j["scenes"] = std::move(scenes);
+  if (!report.fine_tuned.empty()) {
+    nlohmann::ordered_json joints = nlohmann::ordered_json::array();
+    const auto spec = [](const verify::DriveSpec& d) {
+      nlohmann::ordered_json o{{"stiffness", d.stiffness}, {"damping", d.damping}};
+      o["max_force"] = d.max_force ? nlohmann::ordered_json(*d.max_force) : nlohmann::ordered_json();
+      return o;
+    };
+    for (std::size_t index : report.fine_tuned) {
+      const verify::TestedJoint& today = report.plan->joints[index];
+      const auto failures = tuned_failures(report, today.joint->name.text);
+      joints.push_back({{"joint", today.joint->name.text},
+                        {"today", today.drive ? spec(*today.drive) : nlohmann::ordered_json()},
+                        {"proposed", spec(*report.tuned_plan->joints[index].drive)},
+                        {"passed", failures.empty()},
+                        {"failures", failures}});
+    }
+    j["fine_tune"] = {{"runs", 2}, {"joints", std::move(joints)}};
+  }
   j["steps"] = report.steps;
   out << j.dump(2) << "\n";
 }

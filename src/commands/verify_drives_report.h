@@ -18,6 +18,10 @@ struct DriveReport {
   const verify::DrivePlan* plan = nullptr;
   std::vector<verify::DriveResult> results;  // joint by joint, each in test order
   long steps = 0;
+  // --fine-tune: the joints given proposed gains, the plan with them and its results.
+  std::vector<std::size_t> fine_tuned;
+  const verify::DrivePlan* tuned_plan = nullptr;
+  std::vector<verify::DriveResult> tuned_results;
   bool passed() const;
 };
 

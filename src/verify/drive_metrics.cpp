@@ -352,12 +352,19 @@ JointLoads joint_loads(const DrivePlan& plan, const DriveEngine& engine, std::si
 DriveSpec proposed_drive(const DrivePlan& plan, std::size_t joint, const JointLoads& loads) {
   const TestedJoint& j = plan.joints[joint];
   DriveSpec p = j.drive ? *j.drive : DriveSpec{};
+  if (!j.drive) {  // the limits the joint already has
+    if (j.joint->effort && j.joint->effort->value > 0 && std::isfinite(j.joint->effort->value))
+      p.max_force = j.joint->effort->value;
+    if (j.joint->velocity && j.joint->velocity->value > 0 && std::isfinite(j.joint->velocity->value))
+      p.max_velocity = j.joint->velocity->value;
+  }
   const double droop = j.angular ? plan.limits.droop_rad.value : plan.limits.droop_m.value;
   const double settle =
       physics::stiffness_for_frequency(physics::frequency_to_settle(kSettleShare * plan.limits.settle_time_s.value), loads.inertia);
-  // The step settles only if gravity's pull at its target leaves less than the settle band.
+  // The step settles only if gravity's pull at its target leaves less than the settle band; half
+  // of it, so that the other joints' own droop, which moves the links this one carries, fits too.
   const double range = j.lower ? *j.upper - *j.lower : INFINITY;
-  const double band = plan.limits.settle_band.value * physics::drive_step_size(range, j.angular);
+  const double band = 0.5 * plan.limits.settle_band.value * physics::drive_step_size(range, j.angular);
   const double step = band > 0 ? physics::stiffness_for_droop(loads.gravity_at_step, band) : 0.0;
   // Today's stiffness is kept when it already does all three: the fix changes as little as it can.
   p.stiffness = std::max({physics::stiffness_for_droop(loads.gravity_max, droop), settle, step,

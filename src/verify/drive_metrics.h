@@ -34,7 +34,7 @@ JointLoads joint_loads(const DrivePlan& plan, const DriveEngine& engine, std::si
 
 // Gains that pass where today's fail: damping for a damping ratio of 1 on the inertia the
 // joint sees; stiffness the largest of today's, what keeps the droop under [verify.drives] droop
-// over the whole range, what keeps gravity's pull at the step's target within the settle band,
+// over the whole range, what keeps gravity's pull at the step's target within half the settle band,
 // and what settles within a fifth of the settle limit; a max force raised to the largest
 // gravity torque when it is below it.
 DriveSpec proposed_drive(const DrivePlan& plan, std::size_t joint, const JointLoads& loads);
