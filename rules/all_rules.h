@@ -29,5 +29,6 @@ const Rule& grasp_slip();
 const Rule& self_collision();
 const Rule& units_collider_scale();
 const Rule& inertia_com_outside();
+const Rule& grasp_finger_collider();
 
 }  // namespace assetlint::rules

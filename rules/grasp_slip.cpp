@@ -7,45 +7,13 @@
 #include <string>
 #include <string_view>
 
-#include "physics/gripper.h"
 #include "rules/all_rules.h"
+#include "rules/gripper_drive.h"
 #include "rules/support.h"
 #include "util/numbers.h"
 
 namespace assetlint::rules {
 namespace {
-
-// Whether `upper` moves `lower`: it is the joint of a link on the way from `lower` to the root.
-bool moves(const Asset& asset, const Joint& upper, const Joint& lower) {
-  std::vector<const Link*> seen;
-  for (const Link* link = asset.side_link(lower, 0); link;) {
-    if (std::find(seen.begin(), seen.end(), link) != seen.end()) return false;
-    seen.push_back(link);
-    const Joint* parent = nullptr;
-    for (const Joint* j : asset.joints_at(link->name.text))
-      if (j->child.text == link->name.text) parent = j;
-    if (!parent) return false;
-    if (parent == &upper) return true;
-    link = asset.side_link(*parent, 0);
-  }
-  return false;
-}
-
-// The gripper's driven joint: a single-DOF joint other joints mimic, with nothing below it moving
-// on its own (physics::drives_gripper), whose coupled joints include two on separate branches
-// (two fingers that close on each other; a telescoping chain of mimics holds nothing). nullptr
-// when the model has none.
-const Joint* gripper_drive(const Asset& asset) {
-  for (const Joint& joint : asset.joints) {
-    if (!is_single_dof(joint.type) || joint.is_mimic() || !physics::drives_gripper(asset, joint)) continue;
-    std::vector<const Joint*> set = asset.mimic_followers(joint.name.text);
-    set.push_back(&joint);
-    for (std::size_t i = 0; i < set.size(); ++i)
-      for (std::size_t k = i + 1; k < set.size(); ++k)
-        if (!moves(asset, *set[i], *set[k]) && !moves(asset, *set[k], *set[i])) return &joint;
-  }
-  return nullptr;
-}
 
 // Where `name="value"` can be inserted into the start tag that `element` begins: after its name.
 std::size_t after_tag_name(std::string_view text, std::size_t element) {

@@ -35,6 +35,7 @@ const std::vector<const Rule*>& checks() {
       &self_collision(),
       &units_collider_scale(),
       &inertia_com_outside(),
+      &grasp_finger_collider(),
   };
   return list;
 }
