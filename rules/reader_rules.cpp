@@ -12,6 +12,11 @@ const RuleInfo kUrdfInvalid{
     "urdfdom (and so ROS, check_urdf and simulator importers) rejects the model",
     Severity::Error, false, RuleOrigin::Reader, {}};
 
+const RuleInfo kUrdfRepeatedElement{
+    "urdf-repeated-element",
+    "A URDF element MuJoCo reads once (a link's <inertial>, a visual's <material>, a joint's <limit>, …) written twice: MuJoCo refuses the file, urdfdom ignores all but the first",
+    Severity::Error, false, RuleOrigin::Reader, {}};
+
 const RuleInfo kLayerUnresolved{
     "layer-unresolved",
     "A USD layer or reference is missing, binary, outside the checked tree, or cyclic: its opinions are skipped",

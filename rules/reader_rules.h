@@ -7,6 +7,7 @@ namespace assetlint::rules {
 
 extern const RuleInfo kParseError;
 extern const RuleInfo kUrdfInvalid;
+extern const RuleInfo kUrdfRepeatedElement;
 extern const RuleInfo kLayerUnresolved;
 extern const RuleInfo kStaleSchemaAttribute;
 extern const RuleInfo kMimicAxisInstance;

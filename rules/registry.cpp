@@ -42,7 +42,7 @@ const std::vector<const Rule*>& checks() {
 
 const std::vector<const RuleInfo*>& catalog() {
   static const std::vector<const RuleInfo*> list = [] {
-    std::vector<const RuleInfo*> all{&kParseError, &kUrdfInvalid, &kLayerUnresolved, &kStaleSchemaAttribute,
+    std::vector<const RuleInfo*> all{&kParseError, &kUrdfInvalid, &kUrdfRepeatedElement, &kLayerUnresolved, &kStaleSchemaAttribute,
                                      &kMimicAxisInstance, &kUnusedSuppression, &kDriveInstanceIgnored,
                                      &kMimicLimitsRequired, &kMjcfUnsupported, &kXacroUnexpanded, &kCompareMismatch,
                                      &kCompareUnmatched};

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "formats/urdf/mujoco_singletons.h"
 #include "formats/urdf/urdfdom_check.h"
 #include "formats/urdf/urdfdom_verdict.h"
 #include "formats/xml/scanned_document.h"
@@ -52,6 +53,7 @@ class UrdfReader {
       else if (el->name == "joint") read_joint(el);
     }
     result_.asset.index_names();
+    for (Diagnostic& d : repeated_singletons(doc_)) result_.diagnostics.push_back(std::move(d));
     std::optional<std::vector<std::string>> urdfdom_messages = predicted_urdfdom_errors(doc_);
     report_urdfdom(urdfdom_messages ? std::move(*urdfdom_messages) : urdfdom_errors(doc_.document()));
     return std::move(result_);
