@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <set>
@@ -17,6 +16,7 @@
 #include "engine/settings.h"
 #include "physics/mujoco_inertia.h"
 #include "pipeline/lint.h"
+#include "support/mujoco_oracle.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -80,27 +80,14 @@ TEST_CASE("MuJoCo's inertia refusals: eigenvalues of a full tensor, A + B >= C e
 
 TEST_CASE("inertia-invalid names MuJoCo's refusal of a URDF exactly where MuJoCo's compiler refuses it",
           "[inertia][mujoco][oracle]") {
-  const auto package = test::source_dir() / "tools" / "node_modules" / "@mujoco" / "mujoco";
-  std::string missing;
-  if (!test::on_path("node")) missing = "node not found on PATH";
-  else if (!fs::exists(package / "mujoco.js"))
-    missing = "@mujoco/mujoco is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
-  if (test::skip_without_reference("MuJoCo (@mujoco/mujoco)", missing)) return;
+  if (test::skip_without_reference("MuJoCo (@mujoco/mujoco)", test::mujoco_missing())) return;
 
   std::vector<fs::path> models;
   for (const auto& entry : fs::directory_iterator(test::fixtures_dir() / "rules" / "inertia-invalid"))
     if (entry.path().extension() == ".urdf") models.push_back(entry.path());
   std::sort(models.begin(), models.end());
   REQUIRE(models.size() >= 10);
-  test::TempDir dir;
-  const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
-  std::string command = "timeout 300 node " +
-                        test::shell_quote((test::source_dir() / "tests" / "mujoco_reference" / "compile.mjs").string()) +
-                        " " + test::shell_quote(package.string());
-  for (const auto& model : models) command += " " + test::shell_quote(model.string());
-  command += " >" + test::shell_quote(out.string()) + " 2>" + test::shell_quote(err.string()) + " </dev/null";
-  REQUIRE(std::system(command.c_str()) == 0);
-  const nlohmann::json compiled = nlohmann::json::parse(test::read_file(out));
+  const nlohmann::json compiled = test::compile_with_mujoco(models);
   REQUIRE(compiled["models"].size() == models.size());
 
   // The errors of MuJoCo's compiler a link's mass properties cause, and the body they name.

@@ -34,6 +34,7 @@
 #include "physics/articulation.h"
 #include "physics/joint_space_matrix.h"
 #include "pipeline/lint.h"
+#include "support/mujoco_oracle.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -455,27 +456,19 @@ void compare_model(const fs::path& path, const nlohmann::json& compiled, Compari
 
 // `base`: the directory model paths are named relative to in the listing.
 void hold_to_mujoco(const std::vector<fs::path>& models, const fs::path& base) {
-  const auto package = source_dir() / "tools" / "node_modules" / "@mujoco" / "mujoco";
-  std::string missing;
-  if (!assetlint::test::on_path("node")) missing = "node not found on PATH";
-  else if (!fs::exists(package / "mujoco.js"))
-    missing = "@mujoco/mujoco is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
+  const std::string missing = assetlint::test::mujoco_missing();
   if (!missing.empty()) {
     if (assetlint::test::in_ci()) FAIL("MuJoCo reference missing in CI: " << missing);
     WARN("MuJoCo reference test skipped: " << missing);
     return;
   }
   REQUIRE(!models.empty());
-  assetlint::test::TempDir dir;
-  const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
-  std::string command = std::string("timeout 300 node ") +
-                        shell_quote((source_dir() / "tests" / "mujoco_reference" / "compile.mjs").string()) + " " +
-                        shell_quote(package.string());
-  for (const auto& model : models) command += " " + shell_quote(model.string());
-  command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-  const int status = std::system(command.c_str());
-  if (status != 0) FAIL("compile.mjs failed (status " << status << "): " << read_file(err));
-  const nlohmann::json compiled = nlohmann::json::parse(read_file(out));
+  nlohmann::json compiled;
+  try {
+    compiled = assetlint::test::compile_with_mujoco(models);
+  } catch (const std::exception& e) {
+    FAIL(e.what());
+  }
   REQUIRE(compiled["models"].size() == models.size());
 
   std::vector<std::string> differences;

@@ -6,13 +6,13 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "engine/settings.h"
 #include "pipeline/lint.h"
+#include "support/mujoco_oracle.h"
 #include "test_support.h"
 
 using namespace assetlint;
@@ -30,12 +30,7 @@ bool flagged(const fs::path& file) {
 
 TEST_CASE("urdf-repeated-element flags a URDF exactly when MuJoCo refuses it for a repeated element",
           "[urdf][mujoco][oracle]") {
-  const auto package = test::source_dir() / "tools" / "node_modules" / "@mujoco" / "mujoco";
-  std::string missing;
-  if (!test::on_path("node")) missing = "node not found on PATH";
-  else if (!fs::exists(package / "mujoco.js"))
-    missing = "@mujoco/mujoco is not installed in tools/node_modules: scripts/bootstrap.sh was not run";
-  if (test::skip_without_reference("MuJoCo (@mujoco/mujoco)", missing)) return;
+  if (test::skip_without_reference("MuJoCo (@mujoco/mujoco)", test::mujoco_missing())) return;
 
   std::vector<fs::path> models;
   for (const char* dir : {"urdf-repeated-element", "structure-multiple-parents", "structure-joint-axis"})
@@ -43,15 +38,7 @@ TEST_CASE("urdf-repeated-element flags a URDF exactly when MuJoCo refuses it for
       if (entry.path().extension() == ".urdf") models.push_back(entry.path());
   std::sort(models.begin(), models.end());
   REQUIRE(models.size() >= 4);
-  test::TempDir dir;
-  const auto out = dir.path() / "out.json", err = dir.path() / "err.txt";
-  std::string command = "timeout 300 node " +
-                        test::shell_quote((test::source_dir() / "tests" / "mujoco_reference" / "compile.mjs").string()) +
-                        " " + test::shell_quote(package.string());
-  for (const auto& model : models) command += " " + test::shell_quote(model.string());
-  command += " >" + test::shell_quote(out.string()) + " 2>" + test::shell_quote(err.string()) + " </dev/null";
-  REQUIRE(std::system(command.c_str()) == 0);
-  const nlohmann::json compiled = nlohmann::json::parse(test::read_file(out));
+  const nlohmann::json compiled = test::compile_with_mujoco(models);
   REQUIRE(compiled["models"].size() == models.size());
   int refused = 0;
   for (std::size_t i = 0; i < models.size(); ++i) {
