@@ -37,6 +37,7 @@ class ArmatureExcessive final : public Rule {
     const double max_time_constant = rule_option(info_, settings, "max_time_constant");
     const double servo_armature = rule_option(info_, settings, "servo_armature");
     const DriveModel model(asset, settings);
+    std::vector<const Joint*> unjudged;  // an armature whose load has no mass to compare with
     for (const Joint& joint : asset.joints) {
       if (!is_single_dof(joint.type) || !joint.armature || joint.armature->value <= 0) continue;
       const double armature = joint.armature->value;
@@ -44,7 +45,11 @@ class ArmatureExcessive final : public Rule {
       const Moved moved = what_it_moves(model, asset, settings, joint, lighter, armature);
       // A stand-in mass (MuJoCo refuses a massless body on a joint; a model meant to carry a
       // tool there puts 1e-9 kg): the armature is then the joint's only inertia, by design.
-      if (!moved.known || moved.value < kStandInLoad) continue;
+      if (!moved.known) {
+        unjudged.push_back(&joint);
+        continue;
+      }
+      if (moved.value < kStandInLoad) continue;
       const double ratio = armature / moved.value;
       if (ratio <= factor) continue;
       if (joint.motor && armature <= reflected(*joint.motor) * (1 + 1e-6)) continue;
@@ -66,6 +71,7 @@ class ArmatureExcessive final : public Rule {
       }
       report(c, out);
     }
+    report_unjudged(model, unjudged, out);
   }
 
  private:
@@ -73,6 +79,38 @@ class ArmatureExcessive final : public Rule {
   static constexpr double kStandInLoad = 1e-9;
 
   // What the armature is compared with.
+  // Armatures the rule cannot compare with anything: one info for the file, so the silence on
+  // them is not read as a verdict.
+  static void report_unjudged(const DriveModel& model, const std::vector<const Joint*>& joints, Reporter& out) {
+    if (joints.empty()) return;
+    const Joint& first = *joints.front();
+    const std::string amount = fmt::format("{} {}", format_number(first.armature->value, 3),
+                                           is_angular(first.type) ? "kg·m²" : "kg");
+    Diagnostic& d = out.report(
+        first.armature->span.valid() ? first.armature->span : first.name.span, Severity::Info,
+        joints.size() == 1
+            ? fmt::format("armature {} of {} not judged: what the joint moves has no known inertia", amount, short_name(first))
+            : fmt::format("armature of {} joints not judged ({} of {} first): what they move has no known inertia",
+                          joints.size(), amount, short_name(first)));
+    constexpr std::size_t kListed = 5;
+    for (std::size_t i = 0; i < joints.size() && i < kListed; ++i) {
+      const physics::ArticulatedInertia inertia = model.articulation().joint_space_inertia(*joints[i]);
+      std::string why = inertia.reason;
+      if (!inertia.unknown_links.empty()) {
+        why = "unknown mass properties of ";
+        for (std::size_t k = 0; k < inertia.unknown_links.size() && k < 3; ++k)
+          why += (k ? ", '" : "'") + inertia.unknown_links[k] + "'";
+        if (inertia.unknown_links.size() > 3) why += fmt::format(" and {} more", inertia.unknown_links.size() - 3);
+      }
+      d.note(fmt::format("{}: {}{}.", joint_label(*joints[i]), format_number(joints[i]->armature->value, 3),
+                         why.empty() ? "" : fmt::format(" ({})", why)));
+    }
+    if (joints.size() > kListed) d.note(fmt::format("… and {} more.", joints.size() - kListed));
+    d.note("The armature is compared with everything the joint moves; where a body's mass or inertia is unknown (an "
+           "MJCF body whose inertia MuJoCo derives from mesh geoms, a link without <inertial>) there is nothing to "
+           "compare it with, so no ratio is given. Give the bodies explicit mass and inertia to have it judged.");
+  }
+
   struct Moved {
     bool known = false;
     double value = 0;     // kg·m² (kg), without the armature
