@@ -33,6 +33,10 @@ struct Params {
   Param bias_velocity;  // −biasprm[2]: kv, or −ζ when the slot holds a damping ratio
   bool affine = false;
   std::string gaintype = "fixed";
+  // gainprm[1] and gainprm[2]: an affine gain's length and velocity terms. With both 0 the gain
+  // is the constant gainprm[0], as a fixed one is.
+  double gain_length = 0, gain_velocity = 0;
+  bool constant_gain() const { return gaintype == "fixed" || (gaintype == "affine" && gain_length == 0 && gain_velocity == 0); }
   Param gear = Param::fixed(1.0);
   Attr forcerange, ctrlrange;
   std::optional<bool> forcelimited, ctrllimited;
@@ -62,7 +66,11 @@ void apply(const XMLElement* el, Params& p, Values& values) {
   if (tag == "general") {
     if (Attr a = own(el, "biastype")) p.affine = trim(a.value) == "affine";
     if (Attr a = own(el, "gaintype")) p.gaintype = std::string(trim(a.value));
-    if (Attr a = own(el, "gainprm"); a && values.numbers(a, "gainprm")) p.gain = token_param(a, "gainprm", 0, 1.0);
+    if (Attr a = own(el, "gainprm"); a && values.numbers(a, "gainprm")) {
+      if (Param g = token_param(a, "gainprm", 0, 1.0); g.attr) p.gain = g;
+      if (Param g = token_param(a, "gainprm", 1, 1.0); g.attr) p.gain_length = g.value;
+      if (Param g = token_param(a, "gainprm", 2, 1.0); g.attr) p.gain_velocity = g.value;
+    }
     // MuJoCo reads as many entries as the element writes and keeps the rest from the class
     // (xml_native_reader's ReadAttr without `exact`): biasprm="0 -250" under a class with
     // "0 -50 -5" compiles to (0, -250, -5).
@@ -304,8 +312,13 @@ void drive_joint(const XMLElement* el, const Params& p, const std::string& label
   const bool ctrl_limited = p.ctrllimited.value_or(p.ctrlrange && compiler.autolimits);
   const Unit force_unit = angular ? Unit::NewtonMeter : Unit::Newton;
 
-  if (p.gaintype != "fixed") {
-    values.unsupported(values.element_span(el), fmt::format("{}: gaintype '{}' is not modelled", label, p.gaintype));
+  if (!p.constant_gain()) {
+    values.unsupported(values.element_span(el),
+                       p.gaintype == "affine"
+                           ? fmt::format("{}: an affine gain with a length or velocity term (gainprm[1], gainprm[2]) "
+                                         "is not modelled",
+                                         label)
+                           : fmt::format("{}: gaintype '{}' is not modelled", label, p.gaintype));
     return;
   }
   // A damper (no spring: a velocity actuator) adds −kv·q̇ to whatever else drives the joint;
