@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rules/all_rules.h"
+#include "rules/consumer_concern.h"
 #include "rules/support.h"
 #include "util/numbers.h"
 
@@ -19,8 +20,8 @@ class MimicMaxVelocity final : public Rule {
  public:
   const RuleInfo& info() const override { return info_; }
 
-  void check(const Asset& asset, const Settings&, Reporter& out) const override {
-    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
+  void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
+    if (!max_velocity_read(asset, settings)) return;  // no consumer the asset is judged for bounds speed by it
     for (const Joint& joint : asset.joints) {
       if (!joint.mimic || !is_single_dof(joint.type) || !joint.velocity || !joint.velocity->span.valid()) continue;
       const Quantity& velocity = *joint.velocity;

@@ -8,6 +8,7 @@
 
 #include "physics/gripper.h"
 #include "rules/all_rules.h"
+#include "rules/consumer_concern.h"
 #include "rules/limit_placeholders.h"
 #include "rules/support.h"
 #include "util/numbers.h"
@@ -79,7 +80,7 @@ class UnitsVelocityImplausible final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
+    if (!max_velocity_read(asset, settings)) return;  // no consumer the asset is judged for bounds speed by it
     const double min_time = rule_option(info_, settings, "min_traversal_time_s");
     const double max_time = rule_option(info_, settings, "max_traversal_time_s");
     const double placeholder = rule_option(info_, settings, "placeholder_velocity");

@@ -166,9 +166,9 @@ TEST_CASE("fix: overlapping fixes wait for the next round, the first by position
     // goes in; the second then no longer matches the text and is not offered again.
     if (round++ > 0) return;
     Diagnostic d1{"test-a", Severity::Warning, report.source(0).span(0, comment, 1), "m1",
-                  Fix{"capital", Applicability::Safe, {Edit{0, comment, 1, "A"}}}, {}};
+                  Fix{"capital", Applicability::Safe, {Edit{0, comment, 1, "A"}}}, {}, {}, {}};
     Diagnostic d2{"test-b", Severity::Warning, report.source(0).span(0, comment, 1), "m2",
-                  Fix{"article", Applicability::Safe, {Edit{0, comment, 9, "the comment"}}}, {}};
+                  Fix{"article", Applicability::Safe, {Edit{0, comment, 9, "the comment"}}}, {}, {}, {}};
     report.diagnostics.push_back(d2);
     report.diagnostics.push_back(d1);
   };
@@ -194,7 +194,7 @@ TEST_CASE("fix: a fix that would make the file unparsable is dropped, the others
     // Offered every round, as a rule would keep offering it.
     const std::size_t at = report.source(0).text().find("<robot");
     report.diagnostics.push_back({"test-break", Severity::Warning, report.source(0).span(0, at, 6), "m",
-                                  Fix{"rename the root", Applicability::Safe, {Edit{0, at + 1, 5, "robt"}}}, {}});
+                                  Fix{"rename the root", Applicability::Safe, {Edit{0, at + 1, 5, "robt"}}}, {}, {}, {}});
   };
   const FixResult r = fix_file("robot.urdf", Settings{}, options, files);
   REQUIRE_FALSE(r.error);
@@ -217,7 +217,7 @@ TEST_CASE("fix: fixes that keep changing the file stop after the round cap, with
     const std::string& text = report.source(0).text();
     const std::size_t at = text.find(" comment -->") - 1;
     report.diagnostics.push_back({"test-toggle", Severity::Warning, report.source(0).span(0, at, 1), "m",
-                                  Fix{"toggle", Applicability::Safe, {Edit{0, at, 1, text[at] == 'a' ? "b" : "a"}}}, {}});
+                                  Fix{"toggle", Applicability::Safe, {Edit{0, at, 1, text[at] == 'a' ? "b" : "a"}}}, {}, {}, {}});
   };
   const FixResult r = fix_file("robot.urdf", Settings{}, options, files);
   REQUIRE(r.error);
@@ -248,9 +248,9 @@ TEST_CASE("fix: fixes with edits outside their file are internal errors", "[fix]
   options.on_report = [&](FileReport& report) {
     report.diagnostics.push_back({"test-range", Severity::Warning, report.source(0).span(0, 0, 1), "m",
                                   Fix{"past the end", Applicability::Safe,
-                                      {Edit{0, report.source(0).text().size(), 1, "x"}}}, {}});
+                                      {Edit{0, report.source(0).text().size(), 1, "x"}}}, {}, {}, {}});
     report.diagnostics.push_back({"test-file", Severity::Warning, report.source(0).span(0, 0, 1), "m",
-                                  Fix{"no such file", Applicability::Safe, {Edit{7, 0, 0, "x"}}}, {}});
+                                  Fix{"no such file", Applicability::Safe, {Edit{7, 0, 0, "x"}}}, {}, {}, {}});
   };
   const FixResult r = fix_file("robot.urdf", Settings{}, options, files);
   REQUIRE_FALSE(r.error);

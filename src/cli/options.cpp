@@ -9,6 +9,7 @@
 
 #include "cli/command_table.h"
 #include "commands/command_input.h"
+#include "engine/consumers.h"
 #include "rules/registry.h"
 
 namespace assetlint::cli {
@@ -81,6 +82,15 @@ void add_options(CLI::App& app, Options& o) {
                  "Check USD variant set SET in variant NAME only, SET=NAME (repeatable; wins over [usd] variants; "
                  "default: the stage's selection and every variant that carries physics)")
       ->check(commands::check_variant_choice)
+      ->allow_extra_args(false);
+  app.add_option("--target", o.targets,
+                 "Judge the files for this consumer: isaac-sim[@6.1], isaac-lab, mujoco[@3.12], newton, "
+                 "gazebo[@dart|@bullet-featherstone], ros2_control (repeatable; replaces [targets] consumers; default: "
+                 "every consumer the file's format is commonly loaded by)")
+      ->check([](const std::string& text) {
+        std::string error;
+        return parse_consumer(text, error) ? std::string() : error;
+      })
       ->allow_extra_args(false);
   app.add_option("--max-file-size", o.max_file_mib,
                  "Files and layers larger than this many MiB are not read (an error names them; default 512)")
@@ -227,6 +237,7 @@ config::CommandLineOverrides overrides_from(const Options& o) {
   overrides.allow_outside_root = o.allow_outside_root;
   for (const auto& arg : o.xacro_args) overrides.xacro_args.push_back(commands::xacro_argument(arg));
   for (const auto& v : o.variants) overrides.variants.push_back(*commands::variant_choice(v));
+  overrides.targets = o.targets;
   overrides.root = o.root;
   overrides.trees.push_back(std::filesystem::current_path().string());
   for (const auto& path : o.paths)

@@ -33,6 +33,7 @@ struct Options {
   std::vector<std::string> xacro_args;  // --xacro-arg name:=value
   std::vector<std::string> package_paths;  // --package-path DIR
   std::vector<std::string> variants;    // --variant SET=NAME
+  std::vector<std::string> targets;     // --target NAME (repeatable)
   std::uint64_t max_file_mib = ReadLimits::kDefaultMaxFileBytes >> 20;  // larger files and layers are not read
   double time_budget_s = kDefaultTimeBudgetSeconds;                     // per file; 0 = none
   std::string root;  // --root

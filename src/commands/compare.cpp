@@ -89,7 +89,7 @@ class Comparer {
     ++counted.count;
     if (!slip.empty()) ++counted.slips[slip];
     Diagnostic d{std::string(rules::kCompareMismatch.id), rules::kCompareMismatch.default_severity, at_a, std::move(message),
-                 std::nullopt, {}};
+                 std::nullopt, {}, {}, {}};
     out_.push_back(std::move(d));
     Diagnostic& added = out_.back();
     added.note(shifted(at_b, offset_), fmt::format("the counterpart in {} ({})", file_b(), format_name(b_.format)));
@@ -168,7 +168,7 @@ class Comparer {
     for (std::size_t i : only) {
       out_.push_back({std::string(rules::kCompareUnmatched.id), rules::kCompareUnmatched.default_severity,
                       shifted(items[i]->name.span, offset),
-                      fmt::format("{} '{}' has no counterpart in {}", what, items[i]->name.text, other), std::nullopt, {}});
+                      fmt::format("{} '{}' has no counterpart in {}", what, items[i]->name.text, other), std::nullopt, {}, {}, {}});
       out_.back().note("Pair it with `--map NAME=OTHER_NAME` (first file's name first) if the other file names it differently.");
     }
   }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "engine/consumers.h"
 #include "rules/registry.h"
 
 namespace assetlint::config {
@@ -39,6 +40,7 @@ class Loader {
       else if (name == "xacro") xacro(table(node, name));
       else if (name == "usd") usd(table(node, name));
       else if (name == "mujoco") mujoco(table(node, name));
+      else if (name == "targets") targets(table(node, name));
       else unknown(key, "");
     }
     // After the loop: `extend-select` adds to `select` wherever the two stand in the file.
@@ -186,6 +188,23 @@ class Loader {
         if (variant.empty()) fail(value, fmt::format("[usd] variants: the variant of '{}' is empty", set.str()));
         settings_.usd.variants[std::string(set.str())] = Configured<std::string>{variant, origin(value)};
       }
+    }
+  }
+
+  // [targets] consumers = ["isaac-sim@6.1", "mujoco@3.12", "gazebo@dart"]
+  void targets(const toml::table& t) {
+    for (const auto& [key, node] : t) {
+      if (key.str() != "consumers") unknown(key, "targets");
+      const auto* array = node.as_array();
+      if (!array) fail(node, "[targets] consumers must be an array of names such as [\"isaac-sim\", \"mujoco@3.12\"]");
+      std::vector<Configured<std::string>> consumers;
+      for (const auto& item : *array) {
+        const std::string text = string(item, "consumers");
+        std::string error;
+        if (!parse_consumer(text, error)) fail(item, fmt::format("[targets] consumers: {}", error));
+        consumers.push_back(Configured<std::string>{text, origin(item)});
+      }
+      settings_.targets.consumers = std::move(consumers);
     }
   }
 

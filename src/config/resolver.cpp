@@ -23,6 +23,10 @@ const Settings& SettingsResolver::load(const std::string& config_path, std::opti
   settings->allow_outside_root = overrides_.allow_outside_root;
   for (const auto& [name, value] : overrides_.xacro_args) settings->xacro.args[name] = Configured<std::string>{value, "--xacro-arg"};
   for (const auto& [set, variant] : overrides_.variants) settings->usd.variants[set] = Configured<std::string>{variant, "--variant"};
+  if (!overrides_.targets.empty()) {
+    settings->targets.consumers.clear();
+    for (const std::string& target : overrides_.targets) settings->targets.consumers.push_back({target, "--target"});
+  }
   return *by_config_.emplace(config_path, std::move(settings)).first->second;
 }
 

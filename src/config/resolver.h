@@ -27,6 +27,7 @@ struct CommandLineOverrides {
   bool allow_outside_root = false;
   std::vector<std::pair<std::string, std::string>> xacro_args;  // --xacro-arg name:=value
   std::vector<std::pair<std::string, std::string>> variants;    // --variant SET=NAME
+  std::vector<std::string> targets;                             // --target NAME: replaces [targets] consumers
   FileSelectionOverrides files;     // --exclude, --extend-exclude, --no-respect-gitignore, --force-exclude
   std::string working_directory;    // what command-line exclude globs are relative to
 };

@@ -48,6 +48,12 @@ struct Diagnostic {
   std::string message;
   std::optional<Fix> fix;
   std::vector<Note> notes;
+  // Requirements of other checkers that state the same verdict ("SimReady DJ.004"): data for
+  // a team that maps one report onto another (JSON `related`, SARIF `properties`).
+  std::vector<std::string> related;
+  // The consumers a consumer-specific finding concerns ("MuJoCo 3.3", "Gazebo (DART)"); empty
+  // when it concerns every program that loads the file.
+  std::vector<std::string> consumers;
 
   Diagnostic& note(std::string text);
   Diagnostic& note(const Span& at, std::string text);

@@ -9,7 +9,7 @@ Diagnostic& Reporter::report(const Span& span, std::string message) {
 }
 
 Diagnostic& Reporter::report(const Span& span, Severity severity, std::string message) {
-  sink_.push_back(Diagnostic{std::string(rule_.id), severity, span, std::move(message), std::nullopt, {}});
+  sink_.push_back(Diagnostic{std::string(rule_.id), severity, span, std::move(message), std::nullopt, {}, {}, {}});
   return sink_.back();
 }
 

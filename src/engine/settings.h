@@ -129,8 +129,16 @@ struct MujocoSettings {
   MujocoVersion parsed() const { return parse_mujoco_version(version.value).value_or(MujocoVersion{}); }
 };
 
+// [targets] consumers and --target: the programs the asset is judged for, as written
+// ("mujoco@3.3", "gazebo@dart", "isaac-sim@6.1"; engine/consumers.h reads them). Empty: every
+// consumer the file's format is commonly loaded by.
+struct TargetSettings {
+  std::vector<Configured<std::string>> consumers;
+};
+
 struct Settings {
   RuleSelection selection;
+  TargetSettings targets;
   XacroSettings xacro;
   UsdSettings usd;
   MujocoSettings mujoco;

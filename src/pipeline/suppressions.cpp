@@ -121,7 +121,7 @@ void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& so
     const Span span = source.span(f.file, c.comment_offset, c.comment_length);
     const Severity severity = settings.severity_for(unused_id, rules::kUnusedSuppression.default_severity);
     if (c.problem) {
-      unused.push_back(Diagnostic{std::string(unused_id), severity, span, *c.problem, std::nullopt, {}});
+      unused.push_back(Diagnostic{std::string(unused_id), severity, span, *c.problem, std::nullopt, {}, {}, {}});
       continue;
     }
     std::vector<std::string> unknown, idle, kept;
@@ -152,7 +152,7 @@ void apply_suppressions(const std::vector<std::shared_ptr<const SourceFile>>& so
       message += fmt::format("{}unused suppression of {}: no such finding {}", message.empty() ? "" : "; ",
                              quote_list(idle), where);
     }
-    Diagnostic d{std::string(unused_id), severity, span, std::move(message), std::nullopt, {}};
+    Diagnostic d{std::string(unused_id), severity, span, std::move(message), std::nullopt, {}, {}, {}};
     if (unparsable.count(f.file)) {
       d.note("No fix is offered while the file has a parse error: fix that first.");
       unused.push_back(std::move(d));

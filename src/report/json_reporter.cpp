@@ -45,6 +45,10 @@ void write_json(std::ostream& out, const std::vector<FileReport>& reports, const
         notes.push_back(std::move(entry));
       }
       item["notes"] = std::move(notes);
+      // Present only when set: the consumers a consumer-specific finding concerns, and the
+      // requirements of other checkers (SimReady) that state the same verdict.
+      if (!d.consumers.empty()) item["consumers"] = d.consumers;
+      if (!d.related.empty()) item["related"] = d.related;
       if (d.fix) {
         ordered_json edits = ordered_json::array();
         for (const auto& e : d.fix->edits) {

@@ -198,6 +198,8 @@ void write_sarif(std::ostream& out, const std::vector<FileReport>& reports, cons
         result["properties"] = {{"applicability", applicability_name(d.fix->applicability)}};
       }
       if (auto variants = variants_json(d.message)) result["properties"]["variants"] = std::move(*variants);
+      if (!d.consumers.empty()) result["properties"]["consumers"] = d.consumers;
+      if (!d.related.empty()) result["properties"]["related"] = d.related;
       results.push_back(std::move(result));
     }
   }

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "engine/consumers.h"
+#include "formats/file_kind.h"
 #include "physics/dampratio.h"
 #include "rules/registry.h"
 #include "util/numbers.h"
@@ -34,6 +36,34 @@ void line(std::ostream& out, const std::string& assignment, const std::string& o
 void number(std::ostream& out, const char* key, const std::optional<Configured<double>>& value, const char* unset) {
   if (value) line(out, fmt::format("{} = {}", key, format_number(value->value)), value->origin);
   else out << fmt::format("# {} is not set: {}\n", key, unset);
+}
+
+// [targets]: the consumers the file is judged for, configured or the format's defaults.
+void write_targets(std::ostream& out, const std::string& file, const Settings& settings) {
+  out << "\n[targets]\n";
+  if (!settings.targets.consumers.empty()) {
+    std::vector<std::string> names, where;
+    for (const auto& c : settings.targets.consumers) {
+      names.push_back(c.value);
+      where.push_back(c.origin);
+    }
+    line(out, fmt::format("consumers = {}", quoted_list(names)), fmt::format("{}", fmt::join(where, ", ")));
+    out << "# findings that concern none of these consumers are not reported\n";
+    return;
+  }
+  std::optional<SourceFormat> format;
+  std::string_view name;
+  switch (file_kind(file)) {
+    case FileKind::Urdf: case FileKind::Xacro: format = SourceFormat::Urdf; name = "URDF"; break;
+    case FileKind::Usda: case FileKind::Usd: case FileKind::BinaryUsd: format = SourceFormat::Usda; name = "USD"; break;
+    case FileKind::Mjcf: format = SourceFormat::Mjcf; name = "MJCF"; break;
+    case FileKind::Unsupported: break;
+  }
+  if (format)
+    out << fmt::format("# consumers is not set: a {} file's usual ones, {}; a quirk only some of them have is an info\n",
+                       name, default_consumers_text(*format));
+  else
+    out << "# consumers is not set: every consumer the file's format is commonly loaded by\n";
 }
 
 }  // namespace
@@ -116,6 +146,8 @@ void write_settings(std::ostream& out, const std::string& file, const Settings& 
   if (settings.simulation.solver)
     line(out, fmt::format("solver = \"{}\"", settings.simulation.solver->value), settings.simulation.solver->origin);
   else out << "# solver is not set: the stage's physxScene:solverType, else TGS\n";
+
+  write_targets(out, file, settings);
 
   out << "\n[mujoco]\n";
   line(out, fmt::format("version = \"{}\"", settings.mujoco.version.value),

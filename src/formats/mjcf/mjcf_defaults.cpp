@@ -36,7 +36,7 @@ void Defaults::read_class(const MjcfSources& sources, const XMLElement* el, cons
   if (classes_.count(name) && name != "main") {
     diagnostics.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity,
                            sources.document_of(el).value_span(el, "class"),
-                           fmt::format("default class '{}' is defined twice", name), std::nullopt, {}});
+                           fmt::format("default class '{}' is defined twice", name), std::nullopt, {}, {}, {}});
     return;
   }
   Kinds& kinds = classes_[name];
@@ -48,7 +48,7 @@ void Defaults::read_class(const MjcfSources& sources, const XMLElement* el, cons
       if (!child || !*child) {
         diagnostics.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity,
                                sources.document_of(c).element_span(c), "nested <default> without a class name",
-                               std::nullopt, {}});
+                               std::nullopt, {}, {}, {}});
         continue;
       }
       // Read after this class's own elements, so the child inherits all of them.

@@ -343,7 +343,7 @@ class Reader {
     result_.diagnostics.push_back({"inertia-invalid", Severity::Info, in.inertia_span.valid() ? in.inertia_span : link.span,
                                    fmt::format("MuJoCo simulates other mass properties for body '{}' than the file writes",
                                                link.name.text),
-                                   std::nullopt, {}});
+                                   std::nullopt, {}, {}, {}});
     result_.diagnostics.back()
         .note(fmt::format("Its <compiler> settings change them: {}.", change))
         .note("The checks judge the compiled values. If the part's real inertia matters, write it as measured.");

@@ -49,7 +49,7 @@ MjcfSources::MjcfSources(std::shared_ptr<const SourceFile> model, const FileSyst
 }
 
 Diagnostic& MjcfSources::report(std::string_view rule, Severity severity, const Span& span, std::string message) {
-  diagnostics.push_back({std::string(rule), severity, span, std::move(message), std::nullopt, {}});
+  diagnostics.push_back({std::string(rule), severity, span, std::move(message), std::nullopt, {}, {}, {}});
   return diagnostics.back();
 }
 

@@ -14,13 +14,13 @@ using tinyxml2::XMLElement;
 
 Diagnostic& Values::error(const Span& span, std::string message) {
   out_.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity, span, std::move(message),
-                  std::nullopt, {}});
+                  std::nullopt, {}, {}, {}});
   return out_.back();
 }
 
 Diagnostic& Values::unsupported(const Span& span, std::string message) {
   out_.push_back({std::string(rules::kMjcfUnsupported.id), rules::kMjcfUnsupported.default_severity, span,
-                  std::move(message), std::nullopt, {}});
+                  std::move(message), std::nullopt, {}, {}, {}});
   return out_.back();
 }
 

@@ -67,7 +67,7 @@ class UrdfReader {
 
   void parse_error(const Span& span, std::string message) {
     result_.diagnostics.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity, span,
-                                   std::move(message), std::nullopt, {}});
+                                   std::move(message), std::nullopt, {}, {}, {}});
   }
 
   Span element_span(const Element* el) const { return doc_.element_span(el); }
@@ -160,7 +160,7 @@ class UrdfReader {
                        xml::value_span(file_, kFile, *names.front()),
                        fmt::format("unexpanded xacro expression '{}' in a file name; no URDF reader expands it",
                                    first_expression(first)),
-                       std::nullopt, {}};
+                       std::nullopt, {}, {}, {}};
     finding.note(fmt::format("The file name is '{}'.", first));
     if (names.size() > 1) {
       std::vector<std::uint32_t> lines;
@@ -224,7 +224,7 @@ class UrdfReader {
     for (const auto& [name, elements] : by_name) {
       Diagnostic finding{std::string(rules::kXacroUnexpanded.id), rules::kXacroUnexpanded.default_severity,
                          element_span(elements.front()),
-                         fmt::format("<{}> left in an expanded URDF; URDF readers skip it", name), std::nullopt, {}};
+                         fmt::format("<{}> left in an expanded URDF; URDF readers skip it", name), std::nullopt, {}, {}, {}};
       if (elements.size() > 1) {
         std::vector<std::uint32_t> lines;
         for (std::size_t i = 1; i < elements.size(); ++i) lines.push_back(element_span(elements[i]).line);
@@ -450,7 +450,7 @@ class UrdfReader {
     }
     if (located.empty()) return;
     const auto& [span, first] = located.front();
-    Diagnostic finding{std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span, {}, std::nullopt, {}};
+    Diagnostic finding{std::string(rules::kUrdfInvalid.id), rules::kUrdfInvalid.default_severity, span, {}, std::nullopt, {}, {}, {}};
     const std::string primary = fmt::format("urdfdom rejects the file: {}", first);
     if (primary.size() <= kMaxPrimaryMessage) {
       finding.message = primary;

@@ -172,7 +172,7 @@ class Composer {
   Diagnostic* report(const Span& span, Severity severity, std::string message, std::string_view scope) {
     if (!reported_.insert({span.file, span.offset}).second) return nullptr;
     stage_.skipped.push_back({stage_.diagnostics.size(), std::string(scope)});
-    stage_.diagnostics.push_back({std::string(rules::kLayerUnresolved.id), severity, span, std::move(message), std::nullopt, {}});
+    stage_.diagnostics.push_back({std::string(rules::kLayerUnresolved.id), severity, span, std::move(message), std::nullopt, {}, {}, {}});
     return &stage_.diagnostics.back();
   }
 
@@ -180,7 +180,7 @@ class Composer {
     ParseResult r = parse_layer(*stage_.sources[id], id);
     if (!r.ok()) {
       stage_.diagnostics.push_back({std::string(rules::kParseError.id), rules::kParseError.default_severity,
-                                    r.error().span, r.error().message, std::nullopt, {}});
+                                    r.error().span, r.error().message, std::nullopt, {}, {}, {}});
       stage_.usable = false;
       return;
     }

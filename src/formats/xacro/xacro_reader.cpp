@@ -20,7 +20,7 @@ constexpr FileId kFirstXacro = 1;
 
 Diagnostic expansion_error(const ExpandError& error) {
   Diagnostic d{std::string(rules::kParseError.id), rules::kParseError.default_severity, error.span,
-               fmt::format("xacro: {}", error.message), std::nullopt, error.notes};
+               fmt::format("xacro: {}", error.message), std::nullopt, error.notes, {}, {}};
   return d;
 }
 
