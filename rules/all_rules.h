@@ -30,5 +30,9 @@ const Rule& self_collision();
 const Rule& units_collider_scale();
 const Rule& inertia_com_outside();
 const Rule& grasp_finger_collider();
+const Rule& consumer_drops_value();
+const Rule& mimic_constraint_invalid();
+const Rule& joint_undriven();
+const Rule& drive_target_outside_limits();
 
 }  // namespace assetlint::rules

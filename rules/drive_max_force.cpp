@@ -86,6 +86,7 @@ class DriveMaxForce final : public Rule {
     Diagnostic& d = c.out.report(span, c.required || gripper ? Severity::Warning : Severity::Info,
                                  fmt::format("{} has no force bound (maxForce {})", c.label(),
                                              drive.max_force ? "inf" : "unauthored"));
+    d.related.push_back("SimReady DJ.001");
     d.note(drive.max_force ? "maxForce = inf: PhysX never clamps the drive force."
                            : "PhysicsDriveAPI's maxForce falls back to inf: PhysX never clamps the drive force.");
     envelope_note(c, d);

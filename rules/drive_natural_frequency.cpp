@@ -192,6 +192,7 @@ class DriveNaturalFrequency final : public Rule {
            : fmt::format("drive of {}: natural frequency {} rad/s > {} bound {} rad/s (h·nf = {})", short_name(joint),
                              format_number(nf, 4), physics::solver_name(rate.solver), format_number(bound, 4),
                              format_number(h_nf, 3)));
+    d.related.push_back("SimReady DJ.006");
     d.note(derivation(driven, nf));
     d.note(bound_text(rate, h_nf));
     if (mujoco)

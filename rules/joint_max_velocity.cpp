@@ -4,6 +4,7 @@
 
 #include "physics/gripper.h"
 #include "rules/all_rules.h"
+#include "rules/consumer_concern.h"
 #include "rules/limit_placeholders.h"
 #include "rules/support.h"
 #include "util/numbers.h"
@@ -19,7 +20,7 @@ class JointMaxVelocity final : public Rule {
   const RuleInfo& info() const override { return info_; }
 
   void check(const Asset& asset, const Settings& settings, Reporter& out) const override {
-    if (asset.format == SourceFormat::Mjcf) return;  // MuJoCo has no max joint velocity
+    if (!max_velocity_read(asset, settings)) return;  // no consumer the asset is judged for bounds speed by it
     const Joint* spec = physics::spec_joint(asset, settings);
     const bool usd = asset.format == SourceFormat::Usda;
     bool placeholder_reported = false;
@@ -31,7 +32,8 @@ class JointMaxVelocity final : public Rule {
       const bool driven = has_active_drive(joint) || (&joint == spec && (settings.gripper.driven_joint || wanted));
       const Context c{{asset, settings, joint, usd, driven, out}, wanted ? &*wanted : nullptr, &velocities, movable};
       const OptQuantity& v = joint.velocity;
-      if (v && v->span.valid() && v->value == 0 && usd) frozen(c, *v);
+      if (v && v->span.valid() && v->value < 0 && usd) negative(c, *v);
+      else if (v && v->span.valid() && v->value == 0 && usd) frozen(c, *v);
       else if (v && v->span.valid() && v->value <= 0 && !usd) sentinel(c, *v);
       else if (!v || !v->span.valid()) unset(c);
       else if (wanted) against_spec(c, *v);
@@ -54,8 +56,24 @@ class JointMaxVelocity final : public Rule {
   // USD: PhysX clamps |v| to the value every iteration; 0 is not "no limit".
   static void frozen(const Context& c, const Quantity& v) {
     Diagnostic& d = c.out.report(v.span, Severity::Error, fmt::format("max joint velocity 0 freezes {}", c.label()));
+    d.related.push_back("SimReady DJ.005");
     d.note("PhysX clamps the joint's speed to maxJointVelocity in every solver iteration: 0 holds it still. USD has no "
            "'unbounded' sentinel; leave the attribute unauthored (or write the spec's value) instead.");
+    spec_fix(c, v, d);
+  }
+
+  // USD: PhysX clamps the joint speed into [−v, v]; with v < 0 that interval is empty and the
+  // clamp returns its upper end, so every iteration sets the speed to v.
+  static void negative(const Context& c, const Quantity& v) {
+    Diagnostic& d = c.out.report(v.span, Severity::Error,
+                                 fmt::format("negative max joint velocity runs {} at {}", c.label(), describe(v)));
+    d.related.push_back("SimReady DJ.005");
+    d.note(fmt::format("PhysX's articulation solver clamps a joint's speed with PxClamp(v, -max, max) once |v| exceeds "
+                       "max (solveInternalJointConstraintRecursive); with max = {} the clamp returns max itself, so "
+                       "every solver iteration sets the joint moving at {} towards its lower stop, drive or no drive. "
+                       "PhysX's setMaxJointVelocity does not check the sign.",
+                       describe(v), describe(v)));
+    d.note("Write the motor's no-load speed as a positive number, or leave the attribute unauthored.");
     spec_fix(c, v, d);
   }
 

@@ -30,7 +30,12 @@ class MimicDriveConflict final : public Rule {
                          "makes the joint follow '{}': the two fight.",
                          drive.stiffness ? describe(*drive.stiffness) : "0", drive.damping ? describe(*drive.damping) : "0",
                          joint.mimic->reference.text));
+      if (joint.type == JointType::Prismatic)
+        d.note("A prismatic mimic is coupled as a revolute one is: omni.physx maps it to the joint's linear axis "
+               "(PxArticulationAxis::eX, InternalMimicJoint.cpp) and PhysX's mimic solve works on joint coordinates "
+               "whatever their kind, so the follower needs no drive of its own.");
       d.note("Remove the drive from the mimic joint; the followed joint's drive moves both.");
+      d.related.insert(d.related.end(), {"SimReady DJ.004", "SimReady DJ.006"});
     }
   }
 

@@ -36,6 +36,10 @@ const std::vector<const Rule*>& checks() {
       &units_collider_scale(),
       &inertia_com_outside(),
       &grasp_finger_collider(),
+      &consumer_drops_value(),
+      &mimic_constraint_invalid(),
+      &joint_undriven(),
+      &drive_target_outside_limits(),
   };
   return list;
 }

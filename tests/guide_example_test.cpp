@@ -52,7 +52,7 @@ TEST_CASE("guide: grip force, torque per joint, max drive force", "[guide]") {
     if (std::string_view(name) != "finger_joint") {
       // Gearing ±1, as in the guide: the driver supplies Σ|g|·τ.
       const double g = std::string_view(name) == "m2" ? -1.0 : 1.0;
-      j.mimic = Mimic{Name{"finger_joint", {}}, Quantity::unauthored(g, Unit::None), {}, {}, {}, {}, {}};
+      j.mimic = Mimic{Name{"finger_joint", {}}, Quantity::unauthored(g, Unit::None), {}, {}, {}, {}, {}, {}};
     }
     asset.joints.push_back(j);
   }
@@ -84,7 +84,7 @@ TEST_CASE("gripper spec: a prismatic finger needs the per-finger force itself, i
     j.name.text = name;
     j.type = JointType::Prismatic;
     if (std::string_view(name) == "right")
-      j.mimic = Mimic{Name{"left", {}}, Quantity::unauthored(-1.0, Unit::None), {}, {}, {}, {}, {}};
+      j.mimic = Mimic{Name{"left", {}}, Quantity::unauthored(-1.0, Unit::None), {}, {}, {}, {}, {}, {}};
     asset.joints.push_back(j);
   }
   Settings settings = guide_settings();

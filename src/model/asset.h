@@ -109,6 +109,7 @@ struct Drive {
   // (MJCF dampratio before and after MuJoCo 3.15); empty otherwise.
   std::string damping_other_release;
   OptQuantity max_force;   // N·m or N; unset = unlimited
+  OptQuantity target_position;  // rad or m: where the drive pulls the joint; unset = not authored
   DriveType type = DriveType::Force;
   Span type_span;
   Span span;               // where the drive is declared (schema application or config table)
@@ -126,6 +127,9 @@ struct Mimic {
   OptQuantity damping_ratio;      // ≤ 0 = hard constraint
   Span span;               // the <mimic> element / the mimic schema application
   std::string instance;    // USD: rotX / rotY / rotZ
+  // Further targets of the reference relationship (USD): a mimic follows one joint, and
+  // PhysX reads only the first of these.
+  std::vector<Name> extra_references;
 };
 
 // The motor behind a joint, when the asset or configuration names it: what justifies
@@ -207,6 +211,9 @@ struct Joint {
   Boxed<Drive> inactive_drive;
   Boxed<Mimic> mimic;
   Boxed<HiddenLoad> hidden_load;
+  // USD physics:excludeFromArticulation = true: PhysX builds the joint as a maximal-coordinate
+  // joint outside the articulation, where articulation features (mimic) do not reach it.
+  bool excluded_from_articulation = false;
 
   bool is_mimic() const { return mimic.has_value(); }
 };

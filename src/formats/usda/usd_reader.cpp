@@ -135,7 +135,7 @@ class Reader {
   }
 
   void report(const RuleInfo& rule, const Span& span, std::string message, std::vector<std::string> notes = {}) {
-    Diagnostic d{std::string(rule.id), rule.default_severity, span, std::move(message), std::nullopt, {}};
+    Diagnostic d{std::string(rule.id), rule.default_severity, span, std::move(message), std::nullopt, {}, {}, {}};
     for (std::string& note : notes) d.note(std::move(note));
     result_.diagnostics.push_back(std::move(d));
   }
@@ -353,6 +353,8 @@ class Reader {
       }
     joint.parent = body(prim, "physics:body0", joint.span);
     joint.child = body(prim, "physics:body1", joint.span);
+    if (auto excluded = prim.attribute("physics:excludeFromArticulation"); excluded && excluded->attribute->default_value)
+      joint.excluded_from_articulation = excluded->attribute->default_value->as_bool().value_or(false);
     for (int i = 0; i < 2; ++i) {
       Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
       if (auto pos = numbers(prim, i == 0 ? "physics:localPos0" : "physics:localPos1", 3))
@@ -412,6 +414,8 @@ class Reader {
                               : number(prim, ns + "damping", Unit::NewtonSecondPerMeter, kpu_);
       drive.max_force = angular ? number(prim, ns + "maxForce", Unit::NewtonMeter, torque_scale)
                                 : number(prim, ns + "maxForce", Unit::Newton, kpu_ * mpu_);
+      drive.target_position = angular ? number(prim, ns + "targetPosition", Unit::Degree)
+                                      : number(prim, ns + "targetPosition", Unit::Meter, mpu_);
       if (auto opinion = prim.attribute(ns + "type")) {
         if (auto token = opinion->attribute->default_value->as_string()) {
           drive.type = *token == "acceleration" ? DriveType::Acceleration : DriveType::Force;
@@ -550,6 +554,9 @@ class Reader {
       mimic.span = span;
       mimic.instance = inst;
       mimic.reference = target(prim, ns + "referenceJoint", span);
+      if (auto opinion = prim.relationship(ns + "referenceJoint"))
+        for (std::size_t i = 1; i < opinion->targets.size(); ++i)
+          mimic.extra_references.push_back(Name{opinion->targets[i], opinion->target_values[i]->span});
       auto gearing = number(prim, ns + "gearing", Unit::UsdGearing);
       mimic.multiplier = gearing ? *gearing : Quantity::unauthored(-1.0, Unit::UsdGearing);
       auto offset = prismatic ? number(prim, ns + "offset", Unit::UsdOffsetMeter, mpu_)
