@@ -85,7 +85,7 @@ std::vector<Diagnostic> repeated_singletons(const xml::ScannedDocument& doc) {
   Diagnostic d{std::string(rules::kUrdfRepeatedElement.id), rules::kUrdfRepeatedElement.default_severity, r.second,
                fmt::format("{} has {} <{}> elements: MuJoCo's URDF importer refuses the file", r.where, r.count, r.child),
                std::nullopt,
-               {}};
+               {}, {}, {}};
   d.note(r.first, fmt::format("The first <{}>: urdfdom, ROS and the importers built on it read this one and ignore {}.",
                               r.child, r.count == 2 ? "the second" : fmt::format("the other {}", r.count - 1)));
   d.note(fmt::format("MuJoCo reads the <{}> of a <{}> at most once and stops with \"repeated element: '{}'\" "
